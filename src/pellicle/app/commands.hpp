@@ -1,0 +1,32 @@
+#pragma once
+//! The subcommands of `pellicle`. Each returns the process exit code (see core/error.hpp).
+
+#include <string>
+#include <vector>
+
+namespace pellicle {
+
+struct RunOptions {
+  std::string case_path;  //!< empty: the built-in default case
+  std::string out_dir;    //!< empty: the case's output.directory
+  std::vector<std::string> overrides;
+  bool quiet = false;
+  int threads = 0;  //!< 0: OpenMP default
+};
+
+int command_run(const RunOptions& options);
+int command_check(const RunOptions& options);
+
+struct BenchOptions {
+  bool json = false;
+  long points = 250000;
+  long steps = 40;
+  std::vector<int> threads;  //!< empty: 1 and 2
+};
+
+int command_bench(const BenchOptions& options);
+
+//! Print an input problem list to stderr; returns kExitBadInput.
+int report_input_error(const std::exception& error);
+
+}  // namespace pellicle

@@ -1,0 +1,60 @@
+//! The `pellicle` command line.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+#include "pellicle/app/commands.hpp"
+#include "pellicle/core/error.hpp"
+#include "pellicle/core/log.hpp"
+
+int main(int argc, char** argv) {
+  using namespace pellicle;
+  set_log_sink([](LogLevel level, std::string_view message) {
+    const char* tag = level == LogLevel::warning ? "warning: " : level == LogLevel::error ? "error: " : "";
+    std::fprintf(stderr, "pellicle: %s%.*s\n", tag, static_cast<int>(message.size()), message.data());
+  });
+
+  CLI::App app{"Pellicle: MPM for membranes, gases and solids"};
+  app.set_version_flag("--version", std::string(PELLICLE_VERSION));
+  app.require_subcommand(1);
+
+  RunOptions run;
+  auto* run_cmd = app.add_subcommand("run", "Run a case (the built-in two-disk case without CASE)");
+  run_cmd->add_option("case", run.case_path, "Case file (TOML)");
+  run_cmd->add_option("--out", run.out_dir, "Output directory (overrides output.directory)");
+  run_cmd->add_option("--set", run.overrides, "Override a case key: --set solver.end_time=0.5")
+      ->allow_extra_args(false);
+  run_cmd->add_flag("--quiet,-q", run.quiet, "No summary or progress, only errors");
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+      ->check(CLI::PositiveNumber);
+
+  RunOptions check;
+  auto* check_cmd = app.add_subcommand("check", "Validate a case and print its summary without running");
+  check_cmd->add_option("case", check.case_path, "Case file (TOML)")->required();
+  check_cmd->add_option("--set", check.overrides, "Override a case key")->allow_extra_args(false);
+
+  BenchOptions bench;
+  auto* bench_cmd = app.add_subcommand("bench", "Throughput of the two-disk problem, 1 and 2 threads");
+  bench_cmd->add_flag("--json", bench.json, "Print a JSON list instead of text");
+  bench_cmd->add_option("--points", bench.points, "Approximate number of points")
+      ->check(CLI::Range(1000L, 100000000L));
+  bench_cmd->add_option("--steps", bench.steps, "Timed steps")->check(CLI::Range(1L, 100000L));
+  bench_cmd->add_option("--threads", bench.threads, "Thread counts to measure (default: 1 2)");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+
+  try {
+    if (*run_cmd) return command_run(run);
+    if (*check_cmd) return command_check(check);
+    if (*bench_cmd) return command_bench(bench);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pellicle: error: %s\n", e.what());
+    return 1;
+  }
+  return kExitOk;
+}

@@ -1,0 +1,117 @@
+//! `pellicle run` and `pellicle check`.
+#include <omp.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "pellicle/app/commands.hpp"
+#include "pellicle/app/terminal_progress.hpp"
+#include "pellicle/core/error.hpp"
+#include "pellicle/io/build.hpp"
+#include "pellicle/io/case.hpp"
+#include "pellicle/io/output.hpp"
+#include "pellicle/io/run.hpp"
+
+namespace pellicle {
+
+namespace {
+
+const char* kinematics_name(Kinematics k) {
+  switch (k) {
+    case Kinematics::plane_strain: return "2D plane strain";
+    case Kinematics::plane_stress: return "2D plane stress";
+    case Kinematics::axisymmetric: return "2D axisymmetric (x = r, y = z)";
+    case Kinematics::solid: return "3D";
+  }
+  return "";
+}
+
+template <int D>
+void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
+  const auto& g = s.grid();
+  long cells = 1;
+  for (int d = 0; d < D; ++d) cells *= g.cells()[d];
+  std::fprintf(out, "case      %s\n", c.title.c_str());
+  if (!c.source.empty()) std::fprintf(out, "source    %s\n", c.source.c_str());
+  std::fprintf(out, "model     %s, kernel %s\n", kinematics_name(c.settings.kinematics),
+               c.kernel.c_str());
+  std::fprintf(out, "grid      %ld cells (", cells);
+  for (int d = 0; d < D; ++d) std::fprintf(out, "%s%d", d ? " x " : "", g.cells()[d]);
+  std::fprintf(out, ") of %g, %ld nodes with ghosts\n", g.cell(), g.node_count());
+  const auto& p = s.points();
+  for (const auto& b : p.bodies) {
+    double mass = 0.0;
+    for (long i = b.begin; i < b.end; ++i) mass += p.mass[i];
+    std::fprintf(out, "body      %-16s %8ld points, mass %.6g, material '%s'\n", b.name.c_str(),
+                 b.count(), mass, c.material_names[b.material].c_str());
+  }
+  const double dt = s.planned_dt();
+  const double cfl = dt * s.max_signal_speed() / g.cell();
+  std::fprintf(out, "points    %ld in all\n", p.size());
+  std::fprintf(out, "time      end %g, dt %.6g (%s), CFL number %.3g, about %.0f steps\n",
+               c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,
+               std::ceil(c.settings.end_time / dt));
+  std::fprintf(out, "memory    about %.1f MB\n", s.memory_estimate_bytes() / 1048576.0);
+  std::fprintf(out, "output    %s\n", c.output.directory.c_str());
+  if (cfl > 1.0)
+    std::fprintf(out, "warning   CFL number above 1: the run will stop at its first step\n");
+}
+
+template <int D>
+int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
+  Case<D> c = read_case<D>(source);
+  if (!o.out_dir.empty()) c.output.directory = o.out_dir;
+  auto simulation = build_simulation<D>(c);
+  if (check_only) {
+    print_summary(c, *simulation, stdout);
+    std::printf("check     ok\n");
+    return kExitOk;
+  }
+  if (!o.quiet) print_summary(c, *simulation, stderr);
+  OutputWriter<D> output(c.output, *simulation);
+  TerminalProgress progress(isatty(STDERR_FILENO));
+  try {
+    const RunStatistics r =
+        run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress,
+                          hash_text(case_text(source)));
+    if (!o.quiet)
+      std::fprintf(stderr, "done      %ld steps in %.2f s, %.3g particle-steps/s\n",
+                   simulation->step_count(), r.wall_seconds, r.particle_steps_per_second);
+    std::printf("results   %s\n", output.directory().c_str());
+    return kExitOk;
+  } catch (const NumericalError& e) {
+    std::fprintf(stderr, "pellicle: error: %s\n", e.what());
+    std::fprintf(stderr, "pellicle: the history and last snapshot up to the failure are in %s\n",
+                 output.directory().c_str());
+    return kExitNumericalFailure;
+  }
+}
+
+int run_or_check(const RunOptions& o, bool check_only) {
+  if (o.threads > 0) omp_set_num_threads(o.threads);
+  try {
+    const auto source = load_case_source(o.case_path, o.overrides);
+    return case_dimension(*source) == 2 ? run_case<2>(*source, o, check_only)
+                                        : run_case<3>(*source, o, check_only);
+  } catch (const InputError& e) {
+    return report_input_error(e);
+  }
+}
+
+}  // namespace
+
+int report_input_error(const std::exception& error) {
+  std::fprintf(stderr, "%s\n", error.what());
+  if (const auto* input = dynamic_cast<const InputError*>(&error)) {
+    const std::size_t n = input->problems().size();
+    std::fprintf(stderr, "pellicle: %zu problem%s in the input; nothing was run\n", n,
+                 n == 1 ? "" : "s");
+  }
+  return kExitBadInput;
+}
+
+int command_run(const RunOptions& options) { return run_or_check(options, false); }
+int command_check(const RunOptions& options) { return run_or_check(options, true); }
+
+}  // namespace pellicle

@@ -1,0 +1,66 @@
+#include "pellicle/io/build.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "pellicle/geometry/fill.hpp"
+
+namespace pellicle {
+
+template <int D>
+double point_volume(double cell, int points_per_cell, Kinematics kinematics, const Vec<D>& x) {
+  const double v = std::pow(cell / points_per_cell, D);
+  return kinematics == Kinematics::axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v;
+}
+
+template <int D>
+std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
+  Grid<D> grid(c.lower, c.upper, c.cell, c.faces);
+  Particles<D> points;
+  std::vector<InputProblem> problems;
+  for (const auto& b : c.bodies) {
+    const Material<D>& material = *c.materials[b.material];
+    const auto positions =
+        fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell);
+    if (positions.empty()) {
+      problems.push_back({b.where, "body.region",
+                          "body '" + b.name + "': the region holds no point inside the grid"});
+      continue;
+    }
+    points.bodies.push_back({b.name, b.material, Vec<D>::Zero(), points.size(), points.size()});
+    const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
+    const Sym<D> stress =
+        b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);
+    double body_mass = 0.0;
+    for (const auto& x : positions) {
+      const double m =
+          material.density() * point_volume<D>(c.cell, b.points_per_cell, c.settings.kinematics, x);
+      points.add(x, b.velocity, m, material.density(), stress, strain);
+      body_mass += m;
+    }
+    points.bodies.back().applied_acceleration = b.external_force / body_mass;
+  }
+  if (!problems.empty()) throw InputError(problems);
+
+  int ppc = c.bodies.front().points_per_cell;
+  for (const auto& b : c.bodies) {
+    if (b.points_per_cell != ppc && c.kernel == "ugimp")
+      throw InputError(b.where, "body.points_per_cell",
+                       "uGIMP needs one particle size: every body must use the same "
+                       "points_per_cell");
+  }
+  std::unique_ptr<Transfer<D>> transfer;
+  for (const auto& k : kernel_choices<D>())
+    if (k.name == c.kernel) transfer = k.make(c.transfer, ppc);
+
+  std::vector<std::unique_ptr<Material<D>>> materials = std::move(c.materials);
+  return std::make_unique<Simulation<D>>(c.settings, std::move(grid), std::move(points),
+                                         std::move(materials), std::move(transfer), c.gravity);
+}
+
+template std::unique_ptr<Simulation<2>> build_simulation<2>(Case<2>&);
+template std::unique_ptr<Simulation<3>> build_simulation<3>(Case<3>&);
+template double point_volume<2>(double, int, Kinematics, const Vec<2>&);
+template double point_volume<3>(double, int, Kinematics, const Vec<3>&);
+
+}  // namespace pellicle

@@ -1,0 +1,334 @@
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "pellicle/geometry/region_factory.hpp"
+#include "pellicle/io/case.hpp"
+#include "pellicle/io/toml_parameters.hpp"
+
+namespace pellicle {
+
+struct CaseSource {
+  std::string file;  //!< path as given, or "<default case>"
+  std::string text;
+  toml::table root;
+};
+
+namespace {
+
+SourceLocation location_of(const toml::source_region& src, const std::string& file) {
+  return {src.path ? *src.path : file, static_cast<int>(src.begin.line),
+          static_cast<int>(src.begin.column)};
+}
+
+toml::table parse(const std::string& text, const std::string& file) {
+  try {
+    return toml::parse(text, file);
+  } catch (const toml::parse_error& e) {
+    throw InputError(location_of(e.source(), file), "", std::string(e.description()));
+  }
+}
+
+//! Split "body[1].velocity" into {"body", 1}, {"velocity", -1}.
+struct PathPart {
+  std::string key;
+  long index = -1;
+};
+std::vector<PathPart> split_path(const std::string& path, const std::string& setting) {
+  std::vector<PathPart> parts;
+  std::stringstream in(path);
+  std::string piece;
+  const SourceLocation where{"--set " + setting, 0, 0};
+  while (std::getline(in, piece, '.')) {
+    PathPart part;
+    const auto bracket = piece.find('[');
+    part.key = piece.substr(0, bracket);
+    if (bracket != std::string::npos) {
+      const auto close = piece.find(']', bracket);
+      try {
+        if (close != piece.size() - 1) throw std::invalid_argument("bracket");
+        part.index = std::stol(piece.substr(bracket + 1, close - bracket - 1));
+      } catch (const std::exception&) {
+        throw InputError(where, path, "expected an index like body[0], found \"" + piece + "\"");
+      }
+    }
+    if (part.key.empty()) throw InputError(where, path, "expected a dotted key path");
+    parts.push_back(part);
+  }
+  if (parts.empty()) throw InputError(where, path, "expected a dotted key path");
+  return parts;
+}
+
+void apply_override(toml::table& root, const std::string& setting) {
+  const auto eq = setting.find('=');
+  const SourceLocation where{"--set " + setting, 0, 0};
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(where, "", "expected key=value, e.g. --set solver.end_time=0.5");
+  const std::string path = setting.substr(0, eq), value = setting.substr(eq + 1);
+  const auto parts = split_path(path, setting);
+
+  // The value is read as TOML (numbers, arrays, booleans, quoted strings); anything else is
+  // taken as a bare string, so `--set solver.scheme=usl` works without quotes.
+  toml::table holder;
+  try {
+    holder = toml::parse("value = " + value, "--set " + setting);
+  } catch (const toml::parse_error&) {
+    holder = toml::table{};
+    holder.insert("value", value);
+  }
+
+  toml::table* table = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* next = table->get(parts[i].key);
+    if (!next) next = &table->insert(parts[i].key, toml::table{}).first->second;
+    if (parts[i].index >= 0) {
+      toml::array* array = next->as_array();
+      if (!array || parts[i].index >= static_cast<long>(array->size()))
+        throw InputError(where, path, "no element " + std::to_string(parts[i].index) + " in " +
+                                          parts[i].key);
+      next = array->get(parts[i].index);
+    }
+    table = next->as_table();
+    if (!table) throw InputError(where, path, parts[i].key + " is not a table");
+  }
+  if (parts.back().index >= 0)
+    throw InputError(where, path, "an override replaces a whole key; drop the index");
+  table->insert_or_assign(parts.back().key, std::move(*holder.get("value")));
+}
+
+}  // namespace
+
+std::shared_ptr<CaseSource> case_source_from_text(const std::string& text, const std::string& name,
+                                                  const std::vector<std::string>& overrides) {
+  auto source = std::make_shared<CaseSource>();
+  source->file = name;
+  source->text = text;
+  source->root = parse(source->text, source->file);
+  for (const auto& o : overrides) {
+    apply_override(source->root, o);
+    source->text += "\n# --set " + o;  // overrides are part of what was run (case hash)
+  }
+  return source;
+}
+
+std::shared_ptr<CaseSource> load_case_source(const std::string& path,
+                                             const std::vector<std::string>& overrides) {
+  if (path.empty()) return case_source_from_text(default_case_text(), "<default case>", overrides);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(SourceLocation{path, 0, 0}, "", "cannot open the case file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return case_source_from_text(text.str(), path, overrides);
+}
+
+int case_dimension(const CaseSource& source) {
+  const toml::node* lower = source.root.at_path("grid.lower").node();
+  const toml::array* array = lower ? lower->as_array() : nullptr;
+  if (!array || (array->size() != 2 && array->size() != 3)) {
+    const toml::node* where = lower ? lower : source.root.get("grid");
+    SourceLocation loc{source.file, 1, 1};
+    if (where) loc = location_of(where->source(), source.file);
+    throw InputError(loc, "grid.lower",
+                     "expected an array of 2 (2D) or 3 (3D) numbers, found " +
+                         (lower ? describe_node(*lower) : std::string("nothing (required)")));
+  }
+  return static_cast<int>(array->size());
+}
+
+const std::string& case_text(const CaseSource& source) { return source.text; }
+
+namespace {
+
+//! A required vector of D numbers.
+template <int D>
+Vec<D> vec(ParameterReader& in, std::string_view key) {
+  const auto v = in.numbers(key, D);
+  Vec<D> x;
+  for (int d = 0; d < D; ++d) x[d] = v[d];
+  return x;
+}
+
+//! An optional vector of D numbers.
+template <int D>
+Vec<D> vec_or(ParameterReader& in, std::string_view key, const Vec<D>& fallback) {
+  return in.has(key) ? vec<D>(in, key) : fallback;
+}
+
+template <int D>
+Sym<D> read_tensor(ParameterReader& in) {
+  Sym<D> s = Sym<D>::Zero();
+  const char* names2[] = {"xx", "yy", "zz", "xy"};
+  const char* names3[] = {"xx", "yy", "zz", "yz", "xz", "xy"};
+  for (int k = 0; k < kSymComponents<D>; ++k)
+    s[k] = in.number_or(D == 2 ? names2[k] : names3[k], 0.0, NumberRange::any());
+  return s;
+}
+
+const char* face_names[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+
+template <int D>
+void read_grid(TomlParameters& root, Case<D>& c) {
+  auto grid = root.sub_table("grid", true);
+  c.lower = vec<D>(*grid, "lower");
+  c.upper = vec<D>(*grid, "upper");
+  c.cell = grid->number("cell", NumberRange::positive());
+  for (int d = 0; d < D; ++d) {
+    const double span = c.upper[d] - c.lower[d];
+    if (span <= 0.0) {
+      grid->fail("upper", "expected every component above grid.lower");
+      break;
+    }
+    const double cells = span / c.cell;
+    if (std::abs(cells - std::round(cells)) > 1e-6 * std::max(1.0, cells)) {
+      std::ostringstream msg;
+      msg << "expected (upper − lower)/cell to be a whole number of cells on every axis, found "
+          << cells << " on axis " << d;
+      grid->fail("cell", msg.str());
+      break;
+    }
+  }
+
+  if constexpr (D == 2) {
+    const std::string k = grid->choice("kinematics", {"plane-strain", "plane-stress", "axisymmetric"},
+                                       "plane-strain");
+    c.settings.kinematics = k == "plane-stress"   ? Kinematics::plane_stress
+                            : k == "axisymmetric" ? Kinematics::axisymmetric
+                                                  : Kinematics::plane_strain;
+  } else {
+    grid->choice("kinematics", {"solid"}, "solid");
+    c.settings.kinematics = Kinematics::solid;
+  }
+  c.transfer.kinematics = c.settings.kinematics;
+
+  auto faces = grid->sub_table("boundary", false);
+  for (int f = 0; f < 2 * D; ++f) {
+    const std::string v = faces->choice(face_names[f], {"fixed", "slip", "free"}, "fixed");
+    c.faces[f] = v == "slip" ? FaceCondition::slip
+                 : v == "free" ? FaceCondition::free
+                               : FaceCondition::fixed;
+  }
+  if (c.settings.kinematics == Kinematics::axisymmetric) {
+    if (c.lower[0] < 0.0) grid->fail("lower", "expected radius lower[0] >= 0 in axisymmetry");
+    if (c.lower[0] == 0.0) {
+      if (faces->has("x_min") && c.faces[0] != FaceCondition::slip)
+        faces->fail("x_min", "expected \"slip\": x_min is the symmetry axis r = 0");
+      c.faces[0] = FaceCondition::slip;
+    }
+  }
+}
+
+template <int D>
+void read_solver(TomlParameters& root, Case<D>& c) {
+  auto s = root.sub_table("solver", true);
+  const std::string scheme = s->choice("scheme", {"musl", "usl", "usf"}, "musl");
+  c.settings.scheme = scheme == "usl"   ? UpdateScheme::usl
+                      : scheme == "usf" ? UpdateScheme::usf
+                                        : UpdateScheme::musl;
+  const std::string update = s->choice("velocity_update", {"flip", "pic", "blend", "apic"}, "flip");
+  c.transfer.update = update == "pic"     ? VelocityUpdate::pic
+                      : update == "blend" ? VelocityUpdate::blend
+                      : update == "apic"  ? VelocityUpdate::apic
+                                          : VelocityUpdate::flip;
+  if (s->has("flip_fraction") && update != "blend")
+    s->fail("flip_fraction", "only used with velocity_update = \"blend\"");
+  c.transfer.flip_fraction = s->number_or("flip_fraction", 0.99, NumberRange::closed(0.0, 1.0));
+
+  std::vector<std::string> kernels;
+  for (const auto& k : kernel_choices<D>()) kernels.push_back(k.name);
+  c.kernel = s->choice("kernel", kernels, "linear");
+
+  c.settings.end_time = s->number("end_time", NumberRange::positive());
+  if (s->has("dt") && s->has("cfl")) s->fail("cfl", "give either dt (fixed) or cfl, not both");
+  c.settings.fixed_dt = s->number_or("dt", 0.0, NumberRange::positive());
+  c.settings.cfl_fraction = s->number_or("cfl", 0.5, NumberRange::open_closed(0.0, 1.0));
+  if (c.settings.fixed_dt > 0.0) c.settings.cfl_fraction = 0.0;
+  c.gravity = vec_or<D>(*s, "gravity", Vec<D>::Zero());
+}
+
+template <int D>
+void read_output(TomlParameters& root, Case<D>& c) {
+  auto o = root.sub_table("output", false);
+  c.output.directory = o->text_or("directory", "results/" + c.name);
+  c.output.history_interval =
+      o->number_or("history_interval", c.settings.end_time / 1000.0, NumberRange::non_negative());
+  c.output.snapshot_interval =
+      o->number_or("snapshot_interval", c.settings.end_time / 20.0, NumberRange::non_negative());
+  c.output.grid_snapshots = o->flag_or("grid_snapshots", false);
+}
+
+template <int D>
+void read_materials(TomlParameters& root, Case<D>& c) {
+  std::vector<std::string> models;
+  for (const auto& m : material_models<D>()) models.push_back(m.name);
+  for (auto& t : root.sub_tables("material")) {
+    const std::string name = t->text("name");
+    if (std::count(c.material_names.begin(), c.material_names.end(), name))
+      t->fail("name", "expected a unique material name, found \"" + name + "\" again");
+    const std::string model = t->choice("model", models);
+    std::unique_ptr<Material<D>> made;
+    for (const auto& m : material_models<D>())
+      if (m.name == model) made = m.make(*t, c.settings.kinematics);
+    if (!made) t->ignore_rest();
+    c.material_names.push_back(name);
+    c.materials.push_back(std::move(made));
+  }
+}
+
+template <int D>
+void read_bodies(TomlParameters& root, Case<D>& c) {
+  std::set<std::string> names;
+  for (auto& t : root.sub_tables("body")) {
+    BodySpec<D> b;
+    b.where = t->location();
+    b.name = t->text("name");
+    if (!names.insert(b.name).second)
+      t->fail("name", "expected a unique body name, found \"" + b.name + "\" again");
+    const std::string material = t->text("material");
+    const auto it = std::find(c.material_names.begin(), c.material_names.end(), material);
+    if (it == c.material_names.end() && !material.empty())
+      t->fail("material", "expected the name of a [[material]], found \"" + material + "\"");
+    b.material = it == c.material_names.end() ? 0 : static_cast<int>(it - c.material_names.begin());
+    b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
+    b.velocity = vec_or<D>(*t, "velocity", Vec<D>::Zero());
+    b.external_force = vec_or<D>(*t, "external_force", Vec<D>::Zero());
+    if (t->has("initial_stress") && t->has("initial_strain"))
+      t->fail("initial_strain", "give either initial_stress or initial_strain, not both");
+    if (t->has("initial_stress")) b.initial_stress = read_tensor<D>(*t->sub_table("initial_stress", true));
+    if (t->has("initial_strain")) b.initial_strain = read_tensor<D>(*t->sub_table("initial_strain", true));
+    b.region = make_region<D>(*t->sub_table("region", true));
+    c.bodies.push_back(std::move(b));
+  }
+}
+
+}  // namespace
+
+template <int D>
+Case<D> read_case(const CaseSource& source) {
+  Case<D> c;
+  c.file = source.file;
+  ProblemList problems{source.file, {}};
+  {
+    TomlParameters root(source.root, "", problems);
+    auto meta = root.sub_table("case", false);
+    const std::string stem =
+        source.file == "<default case>" ? "default" : std::filesystem::path(source.file).stem().string();
+    c.name = meta->text_or("name", stem);
+    c.title = meta->text_or("title", c.name);
+    c.source = meta->text_or("source", "");
+    read_grid(root, c);
+    read_solver(root, c);
+    read_output(root, c);
+    read_materials(root, c);
+    read_bodies(root, c);
+  }  // unknown keys are reported as the readers go out of scope
+  problems.throw_if_any();
+  return c;
+}
+
+template Case<2> read_case<2>(const CaseSource&);
+template Case<3> read_case<3>(const CaseSource&);
+
+}  // namespace pellicle

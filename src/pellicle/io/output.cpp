@@ -1,0 +1,175 @@
+#include "pellicle/io/output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "pellicle/io/atomic_file.hpp"
+
+namespace pellicle {
+
+namespace {
+const char* axis_names = "xyz";
+
+template <int D>
+Vec<D> body_sum(const Particles<D>& p, const BodyInfo<D>& body, bool velocity, double& mass) {
+  Vec<D> s = Vec<D>::Zero();
+  mass = 0.0;
+  for (long i = body.begin; i < body.end; ++i) {
+    s += p.mass[i] * (velocity ? p.velocity[i] : p.position[i]);
+    mass += p.mass[i];
+  }
+  return s;
+}
+
+std::string json_number(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream out;
+  out << std::setprecision(12) << v;
+  return out.str();
+}
+
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+}  // namespace
+
+std::string hash_text(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a 64 offset basis
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buffer[17];
+  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(h));
+  return buffer;
+}
+
+template <int D>
+OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation)
+    : settings_(settings),
+      points_series_(settings.directory + "/points.pvd"),
+      grid_series_(settings.directory + "/grid.pvd") {
+  std::error_code ec;
+  std::filesystem::create_directories(settings_.directory, ec);
+  if (ec) throw std::runtime_error("cannot create " + settings_.directory + ": " + ec.message());
+  history_.open(settings_.directory + "/history.csv", std::ios::trunc);
+  if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
+  history_ << "time,step,dt,kinetic,strain,internal,gravitational,total";
+  for (int d = 0; d < D; ++d) history_ << ",momentum_" << axis_names[d];
+  for (const auto& b : simulation.points().bodies) {
+    for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".com_" << axis_names[d];
+    for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".vel_" << axis_names[d];
+  }
+  history_ << '\n' << std::setprecision(12);
+  write_history_row(simulation);
+  write_snapshot(simulation);
+}
+
+template <int D>
+void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
+  const SystemState<D> s = simulation.state();
+  history_ << simulation.time() << ',' << simulation.step_count() << ',' << simulation.last_dt()
+           << ',' << s.kinetic << ',' << s.strain << ',' << s.internal << ',' << s.gravitational
+           << ',' << s.total();
+  for (int d = 0; d < D; ++d) history_ << ',' << s.momentum[d];
+  const auto& p = simulation.points();
+  for (const auto& b : p.bodies) {
+    double mass = 0.0;
+    const Vec<D> com = body_sum(p, b, false, mass) / mass;
+    const Vec<D> vel = body_sum(p, b, true, mass) / mass;
+    for (int d = 0; d < D; ++d) history_ << ',' << com[d];
+    for (int d = 0; d < D; ++d) history_ << ',' << vel[d];
+  }
+  history_ << '\n';
+  history_.flush();
+  if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
+  last_history_step_ = simulation.step_count();
+  next_history_ = simulation.time() + settings_.history_interval;
+}
+
+template <int D>
+void OutputWriter<D>::write_snapshot(const Simulation<D>& simulation) {
+  char name[32];
+  std::snprintf(name, sizeof name, "points_%06d.vtu", snapshots_);
+  write_points_vtu<D>(settings_.directory + "/" + name, simulation);
+  points_series_.add(simulation.time(), name);
+  if (settings_.grid_snapshots) {
+    std::snprintf(name, sizeof name, "grid_%06d.vti", snapshots_);
+    write_grid_vti<D>(settings_.directory + "/" + name, simulation.grid());
+    grid_series_.add(simulation.time(), name);
+  }
+  ++snapshots_;
+  last_snapshot_step_ = simulation.step_count();
+  next_snapshot_ = settings_.snapshot_interval > 0.0
+                       ? simulation.time() + settings_.snapshot_interval
+                       : std::numeric_limits<double>::infinity();
+}
+
+template <int D>
+void OutputWriter<D>::after_step(const Simulation<D>& simulation) {
+  // A small tolerance keeps rows on the intended times despite round-off in Σ Δt.
+  const double t = simulation.time() + 1e-9 * simulation.last_dt();
+  if (t >= next_history_) write_history_row(simulation);
+  if (t >= next_snapshot_) write_snapshot(simulation);
+}
+
+template <int D>
+void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string& status,
+                             const std::string& case_hash, double wall_seconds) {
+  if (last_history_step_ != simulation.step_count()) write_history_row(simulation);
+  if (last_snapshot_step_ != simulation.step_count()) write_snapshot(simulation);
+  const SystemState<D> s = simulation.state();
+  const auto& p = simulation.points();
+  const double point_steps = static_cast<double>(p.size()) * simulation.step_count();
+  std::ostringstream j;
+  j << "{\n";
+  j << "  \"version\": " << json_string(PELLICLE_VERSION) << ",\n";
+  j << "  \"status\": " << json_string(status) << ",\n";
+  j << "  \"case_hash\": " << json_string(case_hash) << ",\n";
+  j << "  \"time\": " << json_number(simulation.time()) << ",\n";
+  j << "  \"steps\": " << simulation.step_count() << ",\n";
+  j << "  \"points\": " << p.size() << ",\n";
+  j << "  \"wall_seconds\": " << json_number(wall_seconds) << ",\n";
+  j << "  \"particle_steps_per_second\": "
+    << json_number(wall_seconds > 0.0 ? point_steps / wall_seconds : 0.0) << ",\n";
+  j << "  \"energy\": {\"kinetic\": " << json_number(s.kinetic)
+    << ", \"strain\": " << json_number(s.strain) << ", \"internal\": " << json_number(s.internal)
+    << ", \"gravitational\": " << json_number(s.gravitational)
+    << ", \"total\": " << json_number(s.total()) << "},\n";
+  j << "  \"momentum\": [";
+  for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(s.momentum[d]);
+  j << "],\n  \"bodies\": {";
+  for (std::size_t b = 0; b < p.bodies.size(); ++b) {
+    double mass = 0.0;
+    const Vec<D> com = body_sum(p, p.bodies[b], false, mass) / mass;
+    const Vec<D> vel = body_sum(p, p.bodies[b], true, mass) / mass;
+    j << (b ? ",\n" : "\n") << "    " << json_string(p.bodies[b].name)
+      << ": {\"points\": " << p.bodies[b].count() << ", \"mass\": " << json_number(mass)
+      << ", \"com\": [";
+    for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(com[d]);
+    j << "], \"velocity\": [";
+    for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(vel[d]);
+    j << "]}";
+  }
+  j << "\n  }\n}\n";
+  write_file_atomically(settings_.directory + "/summary.json", j.str());
+}
+
+template class OutputWriter<2>;
+template class OutputWriter<3>;
+
+}  // namespace pellicle

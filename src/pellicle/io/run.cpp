@@ -1,0 +1,78 @@
+#include "pellicle/io/run.hpp"
+
+#include <chrono>
+
+#include "pellicle/core/error.hpp"
+
+namespace pellicle {
+
+namespace {
+template <int D>
+class ProgressObserver final : public StepObserver<D> {
+ public:
+  ProgressObserver(ProgressListener* listener, std::chrono::steady_clock::time_point start)
+      : listener_(listener), start_(start) {}
+  void after_step(const Simulation<D>& s) override {
+    if (listener_) listener_->update(report(s));
+  }
+  ProgressReport report(const Simulation<D>& s) const {
+    ProgressReport r;
+    r.fraction = std::min(1.0, s.time() / s.settings().end_time);
+    r.time = s.time();
+    r.step = s.step_count();
+    r.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return r;
+  }
+
+ private:
+  ProgressListener* listener_;
+  std::chrono::steady_clock::time_point start_;
+};
+}  // namespace
+
+template <int D>
+RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
+                             ProgressListener* progress, const std::string& case_hash) {
+  const auto start = std::chrono::steady_clock::now();
+  ProgressObserver<D> observer(progress, start);
+  simulation.add_observer(&output);
+  simulation.add_observer(&observer);
+  struct Detach {  // the observers live only as long as this call
+    Simulation<D>& s;
+    StepObserver<D>* a;
+    StepObserver<D>* b;
+    ~Detach() {
+      s.remove_observer(a);
+      s.remove_observer(b);
+    }
+  } detach{simulation, &output, &observer};
+  const long first_step = simulation.step_count();
+  auto statistics = [&] {
+    RunStatistics r;
+    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double point_steps =
+        static_cast<double>(simulation.points().size()) * (simulation.step_count() - first_step);
+    r.particle_steps_per_second = r.wall_seconds > 0.0 ? point_steps / r.wall_seconds : 0.0;
+    return r;
+  };
+  try {
+    simulation.run();
+  } catch (const NumericalError& e) {
+    if (progress) progress->finish(observer.report(simulation));
+    output.finish(simulation, std::string("failed: ") + e.what(), case_hash,
+                  statistics().wall_seconds);
+    throw;
+  }
+  if (progress) progress->finish(observer.report(simulation));
+  const RunStatistics r = statistics();
+  output.finish(simulation, "completed", case_hash, r.wall_seconds);
+  return r;
+}
+
+template RunStatistics run_simulation<2>(Simulation<2>&, OutputWriter<2>&, ProgressListener*,
+                                         const std::string&);
+template RunStatistics run_simulation<3>(Simulation<3>&, OutputWriter<3>&, ProgressListener*,
+                                         const std::string&);
+
+}  // namespace pellicle

@@ -1,0 +1,158 @@
+#include "pellicle/io/vtk_writer.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+
+#include "pellicle/io/atomic_file.hpp"
+
+namespace pellicle {
+namespace {
+
+//! RFC 4648 base64 of a byte block.
+void append_base64(std::string& out, const unsigned char* data, std::size_t n) {
+  static const char* alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::size_t i = 0;
+  for (; i + 2 < n; i += 3) {
+    const unsigned v = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += alphabet[(v >> 6) & 63];
+    out += alphabet[v & 63];
+  }
+  if (i < n) {
+    const unsigned v = (data[i] << 16) | (i + 1 < n ? data[i + 1] << 8 : 0);
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += i + 1 < n ? alphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+}
+
+//! One <DataArray> in VTK's inline binary format: base64 of a UInt64 byte count followed by
+//! the little-endian values.
+template <class T>
+void data_array(std::string& out, const char* type, const std::string& name, int components,
+                const std::vector<T>& values) {
+  out += "<DataArray type=\"" + std::string(type) + "\" Name=\"" + name +
+         "\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"binary\">\n";
+  const std::uint64_t bytes = values.size() * sizeof(T);
+  std::vector<unsigned char> block(sizeof(bytes) + bytes);
+  std::memcpy(block.data(), &bytes, sizeof(bytes));
+  if (bytes) std::memcpy(block.data() + sizeof(bytes), values.data(), bytes);
+  append_base64(out, block.data(), block.size());
+  out += "\n</DataArray>\n";
+}
+
+template <int D>
+std::vector<double> as_xyz(const std::vector<Vec<D>>& v) {
+  std::vector<double> out(3 * v.size(), 0.0);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (int d = 0; d < D; ++d) out[3 * i + d] = v[i][d];
+  return out;
+}
+
+//! Symmetric tensors in ParaView's 6-component order: xx, yy, zz, xy, yz, xz.
+template <int D>
+std::vector<double> as_paraview_tensor(const std::vector<Sym<D>>& s) {
+  std::vector<double> out(6 * s.size());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const Mat3 m = to_mat3<D>(s[i]);
+    const double c[6] = {m(0, 0), m(1, 1), m(2, 2), m(0, 1), m(1, 2), m(0, 2)};
+    std::copy(c, c + 6, out.begin() + 6 * i);
+  }
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+void write_points_vtu(const std::string& path, const Simulation<D>& simulation) {
+  const Particles<D>& p = simulation.points();
+  const std::size_t n = p.position.size();
+  std::vector<double> pressure(n), von_mises(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Mat3 s = to_mat3<D>(p.stress[i]);
+    pressure[i] = -s.trace() / 3.0;
+    const Mat3 dev = s + pressure[i] * Mat3::Identity();
+    von_mises[i] = std::sqrt(1.5 * (dev.array() * dev.array()).sum());
+  }
+  std::vector<std::int32_t> connectivity(n), offsets(n);
+  std::vector<std::uint8_t> types(n, 1);  // VTK_VERTEX
+  for (std::size_t i = 0; i < n; ++i) {
+    connectivity[i] = static_cast<std::int32_t>(i);
+    offsets[i] = static_cast<std::int32_t>(i + 1);
+  }
+  std::vector<std::int32_t> body(p.body.begin(), p.body.end());
+
+  std::string out;
+  out.reserve(n * 200 + 4096);
+  out += "<?xml version=\"1.0\"?>\n";
+  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+  out += "<FieldData>\n";
+  data_array(out, "Float64", "TIME", 1, std::vector<double>{simulation.time()});
+  out += "</FieldData>\n";
+  out += "<Piece NumberOfPoints=\"" + std::to_string(n) + "\" NumberOfCells=\"" +
+         std::to_string(n) + "\">\n<Points>\n";
+  data_array(out, "Float64", "position", 3, as_xyz<D>(p.position));
+  out += "</Points>\n<PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
+  data_array(out, "Float64", "velocity", 3, as_xyz<D>(p.velocity));
+  data_array(out, "Float64", "mass", 1, p.mass);
+  data_array(out, "Float64", "volume", 1, p.volume);
+  data_array(out, "Float64", "density", 1, p.density);
+  data_array(out, "Float64", "stress", 6, as_paraview_tensor<D>(p.stress));
+  data_array(out, "Float64", "strain", 6, as_paraview_tensor<D>(p.strain));
+  data_array(out, "Float64", "pressure", 1, pressure);
+  data_array(out, "Float64", "von_mises", 1, von_mises);
+  data_array(out, "Int32", "body", 1, body);
+  out += "</PointData>\n<Cells>\n";
+  data_array(out, "Int32", "connectivity", 1, connectivity);
+  data_array(out, "Int32", "offsets", 1, offsets);
+  data_array(out, "UInt8", "types", 1, types);
+  out += "</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  write_file_atomically(path, out);
+}
+
+template <int D>
+void write_grid_vti(const std::string& path, const Grid<D>& grid) {
+  const IVec<D> n = grid.nodes();
+  const Vec<D> origin = grid.node_position(IVec<D>::Zero());
+  std::ostringstream head;
+  head.precision(17);
+  head << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+          "header_type=\"UInt64\">\n";
+  head << "<ImageData WholeExtent=\"0 " << n[0] - 1 << " 0 " << n[1] - 1 << " 0 "
+       << (D == 3 ? n[D - 1] - 1 : 0) << "\" Origin=\"" << origin[0] << ' ' << origin[1] << ' '
+       << (D == 3 ? origin[D - 1] : 0.0) << "\" Spacing=\"" << grid.cell() << ' ' << grid.cell()
+       << ' ' << grid.cell() << "\">\n";
+  head << "<Piece Extent=\"0 " << n[0] - 1 << " 0 " << n[1] - 1 << " 0 "
+       << (D == 3 ? n[D - 1] - 1 : 0) << "\">\n<PointData Scalars=\"mass\" Vectors=\"velocity\">\n";
+  std::string out = head.str();
+  data_array(out, "Float64", "mass", 1, grid.mass);
+  data_array(out, "Float64", "velocity", 3, as_xyz<D>(grid.velocity));
+  out += "</PointData>\n<CellData>\n</CellData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
+  write_file_atomically(path, out);
+}
+
+void PvdCollection::add(double time, const std::string& file) {
+  entries_.emplace_back(time, file);
+  std::ostringstream out;
+  out.precision(17);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" "
+         "byte_order=\"LittleEndian\">\n<Collection>\n";
+  for (const auto& [t, f] : entries_)
+    out << "  <DataSet timestep=\"" << t << "\" file=\"" << f << "\"/>\n";
+  out << "</Collection>\n</VTKFile>\n";
+  write_file_atomically(path_, out.str());
+}
+
+template void write_points_vtu<2>(const std::string&, const Simulation<2>&);
+template void write_points_vtu<3>(const std::string&, const Simulation<3>&);
+template void write_grid_vti<2>(const std::string&, const Grid<2>&);
+template void write_grid_vti<3>(const std::string&, const Grid<3>&);
+
+}  // namespace pellicle

@@ -1,0 +1,74 @@
+#include "pellicle/mpm/grid.hpp"
+
+#include <cmath>
+
+namespace pellicle {
+
+template <int D>
+Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell,
+              const FaceConditions<D>& faces)
+    : lower_(lower), upper_(upper), h_(cell), inv_h_(1.0 / cell), faces_(faces) {
+  node_count_ = 1;
+  for (int d = 0; d < D; ++d) {
+    cells_[d] = static_cast<int>(std::lround((upper[d] - lower[d]) / cell));
+    nodes_[d] = cells_[d] + 1 + 2 * kGhost;
+    strides_[d] = node_count_;
+    node_count_ *= nodes_[d];
+  }
+  origin_ = lower_ - Vec<D>::Constant(kGhost * h_);
+  mass.assign(node_count_, 0.0);
+  momentum.assign(node_count_, Vec<D>::Zero());
+  force.assign(node_count_, Vec<D>::Zero());
+  velocity.assign(node_count_, Vec<D>::Zero());
+  velocity_change.assign(node_count_, Vec<D>::Zero());
+
+  // Nodes on a constrained face and the ghost layers beyond it take the face's condition;
+  // corners collect the conditions of every face they touch.
+  for (long n = 0; n < node_count_; ++n) {
+    const IVec<D> idx = unflatten(n);
+    unsigned mask = 0;
+    for (int d = 0; d < D; ++d) {
+      const bool low = idx[d] <= kGhost;
+      const bool high = idx[d] >= kGhost + cells_[d];
+      for (int side = 0; side < 2; ++side) {
+        if (!(side == 0 ? low : high)) continue;
+        switch (faces_[2 * d + side]) {
+          case FaceCondition::free: break;
+          case FaceCondition::slip: mask |= 1u << d; break;
+          case FaceCondition::fixed: mask |= (1u << D) - 1u; break;
+        }
+      }
+    }
+    if (mask) constraints_.push_back({n, mask});
+  }
+}
+
+template <int D>
+void Grid<D>::integrate(double dt) {
+  constrain(momentum);
+  constrain(force);
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < node_count_; ++n) {
+    if (mass[n] > 0.0) {
+      const double inv_m = 1.0 / mass[n];
+      velocity_change[n] = (dt * inv_m) * force[n];
+      velocity[n] = inv_m * momentum[n] + velocity_change[n];
+    } else {
+      velocity_change[n].setZero();
+      velocity[n].setZero();
+    }
+  }
+}
+
+template <int D>
+void Grid<D>::velocities_from_momentum() {
+  constrain(momentum);
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < node_count_; ++n)
+    velocity[n] = mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : Vec<D>::Zero();
+}
+
+template class Grid<2>;
+template class Grid<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,103 @@
+#pragma once
+//! The background Cartesian grid: node arrays (structure of arrays), index math and the
+//! boundary conditions on its faces. All index arithmetic lives here.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "pellicle/core/types.hpp"
+
+namespace pellicle {
+
+//! Condition on a grid face: nodes on and beyond the face are constrained.
+enum class FaceCondition : std::uint8_t {
+  free,   //!< no constraint
+  slip,   //!< zero normal velocity (symmetry plane, frictionless wall, axisymmetric axis)
+  fixed,  //!< zero velocity
+};
+
+//! Face order: x-min, x-max, y-min, y-max[, z-min, z-max].
+template <int D>
+using FaceConditions = std::array<FaceCondition, 2 * D>;
+
+template <int D>
+class Grid {
+ public:
+  //! Ghost node layers outside the domain, enough for the widest kernel (cubic B-spline).
+  static constexpr int kGhost = 2;
+
+  Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces);
+
+  double cell() const { return h_; }
+  const Vec<D>& lower() const { return lower_; }
+  const Vec<D>& upper() const { return upper_; }
+  const IVec<D>& cells() const { return cells_; }  //!< cells across the domain per axis
+  const IVec<D>& nodes() const { return nodes_; }  //!< nodes per axis including ghosts
+  long node_count() const { return node_count_; }
+  //! Position of node (i, j[, k]) given in grid index space (ghosts included).
+  Vec<D> node_position(const IVec<D>& index) const {
+    return origin_ + h_ * index.template cast<double>();
+  }
+  Vec<D> node_position(long node) const { return node_position(unflatten(node)); }
+  //! Grid coordinates ξ = (x − origin)/h used by the kernels.
+  Vec<D> to_cell_units(const Vec<D>& x) const { return (x - origin_) * inv_h_; }
+  long flatten(const IVec<D>& index) const {
+    long n = index[D - 1];
+    for (int d = D - 2; d >= 0; --d) n = n * nodes_[d] + index[d];
+    return n;
+  }
+  IVec<D> unflatten(long node) const {
+    IVec<D> index;
+    for (int d = 0; d < D; ++d) {
+      index[d] = static_cast<int>(node % nodes_[d]);
+      node /= nodes_[d];
+    }
+    return index;
+  }
+  //! Flat-index distance between neighbouring nodes along each axis.
+  const std::array<long, D>& strides() const { return strides_; }
+  //! True when x lies in the closed domain box.
+  bool contains(const Vec<D>& x) const {
+    return (x.array() >= lower_.array()).all() && (x.array() <= upper_.array()).all();
+  }
+  const FaceConditions<D>& faces() const { return faces_; }
+
+  //! Momentum-form explicit update (IJNME eqs 9, 11): velocity = (p + Δt f)/m and the
+  //! change over the step, both with the face conditions applied. Nodes without mass get zero.
+  void integrate(double dt);
+  //! velocity = p/m with the face conditions (convected velocity, thesis eq 3.24).
+  void velocities_from_momentum();
+
+  //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
+  void constrain(std::vector<Vec<D>>& field) const {
+    for (const auto& c : constraints_)
+      for (int d = 0; d < D; ++d)
+        if (c.mask & (1u << d)) field[c.node][d] = 0.0;
+  }
+
+  // Node fields.
+  std::vector<double> mass;               //!< lumped mass m_i = Σ_p m_p N_i(x_p) (IJNME eq 7)
+  std::vector<Vec<D>> momentum;           //!< p_i = Σ_p m_p v_p N_i(x_p) (eq 10)
+  std::vector<Vec<D>> force;              //!< internal plus external force (eq 16)
+  std::vector<Vec<D>> velocity;           //!< Lagrangian v_i^L, then the convected velocity
+  std::vector<Vec<D>> velocity_change;    //!< v_i^L − v_i^k over the step (FLIP increment)
+
+ private:
+  struct Constraint {
+    long node;
+    unsigned mask;  //!< bit d set: component d is held at zero
+  };
+  Vec<D> lower_, upper_, origin_;
+  double h_, inv_h_;
+  IVec<D> cells_, nodes_;
+  std::array<long, D> strides_{};
+  long node_count_ = 0;
+  FaceConditions<D> faces_;
+  std::vector<Constraint> constraints_;
+};
+
+extern template class Grid<2>;
+extern template class Grid<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,39 @@
+#pragma once
+//! Point kinematics shared by the constitutive models: strain increment and the Jaumann
+//! rotation of a stress over one step (IJNME 1999 eqs 12–15).
+
+#include "pellicle/core/types.hpp"
+
+namespace pellicle {
+
+//! Δε = Δt sym(L) (eq 12), with the hoop component Δt v_r/r in axisymmetry (0 otherwise).
+template <int D>
+inline Sym<D> strain_increment(const Mat<D>& L, double hoop_rate, double dt) {
+  Sym<D> de;
+  if constexpr (D == 2) {
+    de << L(0, 0), L(1, 1), hoop_rate, 0.5 * (L(0, 1) + L(1, 0));
+  } else {
+    de << L(0, 0), L(1, 1), L(2, 2), 0.5 * (L(1, 2) + L(2, 1)), 0.5 * (L(0, 2) + L(2, 0)),
+        0.5 * (L(0, 1) + L(1, 0));
+  }
+  return dt * de;
+}
+
+//! σ + Δt (W σ − σ W), W = ½ (L − Lᵀ): the rotational part of the Jaumann update (eq 14).
+template <int D>
+inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
+  if constexpr (D == 2) {
+    const double w = 0.5 * dt * (L(1, 0) - L(0, 1));  // W_yx Δt
+    Sym<D> r = s;
+    r[0] -= 2.0 * w * s[3];
+    r[1] += 2.0 * w * s[3];
+    r[3] += w * (s[0] - s[1]);
+    return r;
+  } else {
+    const Mat3 W = 0.5 * dt * (L - L.transpose());
+    const Mat3 S = to_mat3<D>(s);
+    return s + from_mat3<D>(W * S - S * W);
+  }
+}
+
+}  // namespace pellicle

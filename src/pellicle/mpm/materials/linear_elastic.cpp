@@ -1,0 +1,97 @@
+#include "pellicle/mpm/materials/linear_elastic.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pellicle/mpm/materials/kinematics.hpp"
+
+namespace pellicle {
+
+template <int D>
+LinearElastic<D>::LinearElastic(Kinematics kinematics, double density, double youngs_modulus,
+                                double poisson_ratio)
+    : Material<D>(kinematics),
+      density_(density),
+      young_(youngs_modulus),
+      poisson_(poisson_ratio),
+      lambda_(youngs_modulus * poisson_ratio / ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio))),
+      shear_(youngs_modulus / (2.0 * (1.0 + poisson_ratio))) {}
+
+template <int D>
+double LinearElastic<D>::wave_modulus() const {
+  if (this->kinematics() == Kinematics::plane_stress) return young_ / (1.0 - poisson_ * poisson_);
+  return lambda_ + 2.0 * shear_;
+}
+
+template <int D>
+Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
+  Sym<D> ds;
+  if (this->kinematics() == Kinematics::plane_stress) {
+    // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
+    const double c = young_ / (1.0 - poisson_ * poisson_);
+    de[2] = -poisson_ / (1.0 - poisson_) * (de[0] + de[1]);
+    ds << c * (de[0] + poisson_ * de[1]), c * (poisson_ * de[0] + de[1]), 0.0, 2.0 * shear_ * de[3];
+    return ds;
+  }
+  const double volumetric = lambda_ * trace<D>(de);
+  ds = 2.0 * shear_ * de;
+  ds.template head<3>().array() += volumetric;
+  return ds;
+}
+
+template <int D>
+void LinearElastic<D>::update(const MaterialStep<D>& step) const {
+  auto& pts = step.points;
+  const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
+#pragma omp parallel for schedule(static)
+  for (long p = step.begin; p < step.end; ++p) {
+    const Mat<D>& L = step.velocity_gradient[p];
+    Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
+    const Sym<D> ds = stress_increment(de);
+    pts.stress[p] = jaumann_rotate<D>(pts.stress[p], L, step.dt) + ds;
+    pts.strain[p] += de;
+  }
+}
+
+template <int D>
+double LinearElastic<D>::max_wave_speed(const Particles<D>& points, long begin, long end) const {
+  double min_density = density_;
+  for (long p = begin; p < end; ++p) min_density = std::min(min_density, points.density[p]);
+  return std::sqrt(wave_modulus() / min_density);
+}
+
+template <int D>
+double LinearElastic<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
+  // W = ½ σ : C⁻¹ : σ = [(1+ν) σ:σ − ν (tr σ)²] / (2E), valid for every kinematics since the
+  // stored stress includes σ_zz (zero in plane stress).
+  double energy = 0.0;
+#pragma omp parallel for reduction(+ : energy) schedule(static)
+  for (long p = begin; p < end; ++p) {
+    const Sym<D>& s = points.stress[p];
+    const double tr = trace<D>(s);
+    energy += points.volume[p] * ((1.0 + poisson_) * contract<D>(s, s) - poisson_ * tr * tr) /
+              (2.0 * young_);
+  }
+  return energy;
+}
+
+template <int D>
+Sym<D> LinearElastic<D>::stress_from_strain(const Sym<D>& strain) const {
+  Sym<D> e = strain;
+  return stress_increment(e);
+}
+
+template <int D>
+std::unique_ptr<Material<D>> make_linear_elastic(ParameterReader& in, Kinematics kinematics) {
+  const double rho = in.number("density", NumberRange::positive());
+  const double E = in.number("youngs_modulus", NumberRange::positive());
+  const double nu = in.number_or("poisson_ratio", 0.0, {-1.0, 0.5, true, true});
+  return std::make_unique<LinearElastic<D>>(kinematics, rho, E, nu);
+}
+
+template class LinearElastic<2>;
+template class LinearElastic<3>;
+template std::unique_ptr<Material<2>> make_linear_elastic<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_linear_elastic<3>(ParameterReader&, Kinematics);
+
+}  // namespace pellicle

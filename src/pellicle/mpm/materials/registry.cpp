@@ -1,0 +1,19 @@
+//! The material registry: adding a model is one new file and one line here.
+#include "pellicle/mpm/materials/linear_elastic.hpp"
+#include "pellicle/mpm/materials/material.hpp"
+
+namespace pellicle {
+
+template <int D>
+const std::vector<MaterialModel<D>>& material_models() {
+  static const std::vector<MaterialModel<D>> models = {
+      {"linear-elastic", "isotropic linear elasticity, Jaumann stress rate (IJNME eqs 2, 14)",
+       &make_linear_elastic<D>},
+  };
+  return models;
+}
+
+template const std::vector<MaterialModel<2>>& material_models<2>();
+template const std::vector<MaterialModel<3>>& material_models<3>();
+
+}  // namespace pellicle

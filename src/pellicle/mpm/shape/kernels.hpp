@@ -1,0 +1,107 @@
+#pragma once
+//! Shape-function kernels. Each is a 1D function of the point position in cell units; the
+//! D-dimensional weight is the tensor product N_i(x) = Π_d φ(ξ_d − i_d) (thesis §3, eq 3.14 with
+//! bilinear basis functions for the linear kernel). A kernel fills, for one coordinate, the
+//! first node index of the stencil and `width` weights and weight derivatives.
+//!
+//! Coordinates are in cell units: ξ = (x − origin)/h. Derivatives returned are dφ/dξ; the
+//! stencil scales them by 1/h.
+
+#include <cmath>
+
+namespace pellicle::shape {
+
+//! Linear tent (bilinear/trilinear FE basis), the kernel of the seeds. Support 2 nodes.
+struct Linear {
+  static constexpr int width = 2;
+  static constexpr const char* name = "linear";
+  //! APIC uses the gradient form C = Σ v_i ⊗ ∇N_i for this kernel (see docs/theory).
+  static constexpr double apic_inertia = 0.0;
+  inline int fill(double xi, double* w, double* dw) const {
+    const int base = static_cast<int>(std::floor(xi));
+    const double f = xi - base;
+    w[0] = 1.0 - f;
+    w[1] = f;
+    dw[0] = -1.0;
+    dw[1] = 1.0;
+    return base;
+  }
+};
+
+//! Uniform GIMP: the tent convolved with a particle characteristic function of half-width
+//! `half_size` (in cell units, ≤ 1/2). Support 3 nodes.
+struct UGimp {
+  static constexpr int width = 3;
+  static constexpr const char* name = "ugimp";
+  static constexpr double apic_inertia = 0.0;
+  double half_size = 0.25;  //!< l_p / h: 1/(2 × points per cell)
+
+  inline double phi(double r) const {
+    const double l = half_size;
+    const double a = std::abs(r);
+    if (a < l) return 1.0 - (r * r + l * l) / (2.0 * l);
+    if (a < 1.0 - l) return 1.0 - a;
+    if (a < 1.0 + l) return (1.0 + l - a) * (1.0 + l - a) / (4.0 * l);
+    return 0.0;
+  }
+  inline double dphi(double r) const {
+    const double l = half_size;
+    const double a = std::abs(r);
+    const double s = r < 0.0 ? -1.0 : 1.0;
+    if (a < l) return -r / l;
+    if (a < 1.0 - l) return -s;
+    if (a < 1.0 + l) return -s * (1.0 + l - a) / (2.0 * l);
+    return 0.0;
+  }
+  inline int fill(double xi, double* w, double* dw) const {
+    const int base = static_cast<int>(std::floor(xi + 0.5)) - 1;
+    for (int a = 0; a < width; ++a) {
+      const double r = xi - (base + a);
+      w[a] = phi(r);
+      dw[a] = dphi(r);
+    }
+    return base;
+  }
+};
+
+//! Quadratic B-spline centred on nodes. Support 3 nodes. Inertia tensor D = h²/4 I.
+struct QuadraticBSpline {
+  static constexpr int width = 3;
+  static constexpr const char* name = "quadratic-bspline";
+  static constexpr double apic_inertia = 0.25;
+  inline int fill(double xi, double* w, double* dw) const {
+    const int base = static_cast<int>(std::floor(xi - 0.5));
+    const double f = xi - base;  // in [0.5, 1.5)
+    w[0] = 0.5 * (1.5 - f) * (1.5 - f);
+    w[1] = 0.75 - (f - 1.0) * (f - 1.0);
+    w[2] = 0.5 * (f - 0.5) * (f - 0.5);
+    dw[0] = f - 1.5;
+    dw[1] = -2.0 * (f - 1.0);
+    dw[2] = f - 0.5;
+    return base;
+  }
+};
+
+//! Cubic B-spline centred on nodes. Support 4 nodes. Inertia tensor D = h²/3 I.
+struct CubicBSpline {
+  static constexpr int width = 4;
+  static constexpr const char* name = "cubic-bspline";
+  static constexpr double apic_inertia = 1.0 / 3.0;
+  inline int fill(double xi, double* w, double* dw) const {
+    const int base = static_cast<int>(std::floor(xi)) - 1;
+    const double f = xi - base;  // in [1, 2): distances to nodes f, f-1, 2-f... see below
+    const double r0 = f, r1 = f - 1.0, r2 = 2.0 - f, r3 = 3.0 - f;  // |ξ − node|
+    w[0] = (2.0 - r0) * (2.0 - r0) * (2.0 - r0) / 6.0;
+    w[1] = 0.5 * r1 * r1 * r1 - r1 * r1 + 2.0 / 3.0;
+    w[2] = 0.5 * r2 * r2 * r2 - r2 * r2 + 2.0 / 3.0;
+    w[3] = (2.0 - r3) * (2.0 - r3) * (2.0 - r3) / 6.0;
+    // d/dξ: nodes 0,1 lie below ξ (r grows with ξ), nodes 2,3 above (r shrinks).
+    dw[0] = -0.5 * (2.0 - r0) * (2.0 - r0);
+    dw[1] = 1.5 * r1 * r1 - 2.0 * r1;
+    dw[2] = -(1.5 * r2 * r2 - 2.0 * r2);
+    dw[3] = 0.5 * (2.0 - r3) * (2.0 - r3);
+    return base;
+  }
+};
+
+}  // namespace pellicle::shape

@@ -1,0 +1,71 @@
+#pragma once
+//! The per-point stencil of a kernel: the first node it touches, and per axis the 1D weights
+//! and weight derivatives. Computed once per step (DESIGN: stage `stencils`) and reused by
+//! every transfer of that step. The D-dimensional weight of node (a, b[, c]) of the stencil
+//! is w[0][a]·w[1][b]·w[2][c]; its gradient is the product rule over the axes.
+
+#include <array>
+#include <type_traits>
+
+#include "pellicle/core/types.hpp"
+#include "pellicle/mpm/grid.hpp"
+
+namespace pellicle {
+
+template <int D, class Kernel>
+struct Stencil {
+  static constexpr int width = Kernel::width;
+  static constexpr int size = D == 2 ? width * width : width * width * width;
+  long base;                //!< flat index of node (0, 0[, 0]) of the stencil
+  double offset[D];         //!< (x_node(0) − x_p)/h per axis, for APIC's x_i − x_p
+  double w[D][width];       //!< 1D weights φ
+  double dw[D][width];      //!< 1D derivatives dφ/dx (already divided by h)
+};
+
+//! Fill the stencil of a point at x.
+template <int D, class Kernel>
+inline void compute_stencil(const Kernel& kernel, const Grid<D>& grid, const Vec<D>& x,
+                            Stencil<D, Kernel>& s) {
+  const Vec<D> xi = grid.to_cell_units(x);
+  const double inv_h = 1.0 / grid.cell();
+  IVec<D> first;
+  for (int d = 0; d < D; ++d) {
+    first[d] = kernel.fill(xi[d], s.w[d], s.dw[d]);
+    s.offset[d] = first[d] - xi[d];
+    for (int a = 0; a < Kernel::width; ++a) s.dw[d][a] *= inv_h;
+  }
+  s.base = grid.flatten(first);
+}
+
+//! Visit every node of a stencil: f(node, N, ∇N, a) where a is the node's offset within the
+//! stencil in cells (for x_i − x_p = (offset + a) h). Fully inlined for a compile-time kernel.
+template <int D, class Kernel, class F>
+inline void for_each_node(const Stencil<D, Kernel>& s,
+                          const std::type_identity_t<std::array<long, D>>& strides, F&& f) {
+  constexpr int W = Kernel::width;
+  if constexpr (D == 2) {
+    for (int b = 0; b < W; ++b) {
+      const long row = s.base + b * strides[1];
+      for (int a = 0; a < W; ++a) {
+        const double N = s.w[0][a] * s.w[1][b];
+        const Vec<2> grad(s.dw[0][a] * s.w[1][b], s.w[0][a] * s.dw[1][b]);
+        f(row + a, N, grad, IVec<2>(a, b));
+      }
+    }
+  } else {
+    for (int c = 0; c < W; ++c) {
+      for (int b = 0; b < W; ++b) {
+        const long row = s.base + b * strides[1] + c * strides[2];
+        const double wbc = s.w[1][b] * s.w[2][c];
+        for (int a = 0; a < W; ++a) {
+          const double N = s.w[0][a] * wbc;
+          const Vec<3> grad(s.dw[0][a] * wbc, s.w[0][a] * s.dw[1][b] * s.w[2][c],
+                            s.w[0][a] * s.w[1][b] * s.dw[2][c]);
+          f(row + a, N, grad, IVec<3>(a, b, c));
+        }
+      }
+    }
+  }
+}
+
+}  // namespace pellicle

@@ -1,0 +1,170 @@
+#include "pellicle/mpm/simulation.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "pellicle/core/error.hpp"
+
+namespace pellicle {
+
+template <int D>
+Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D> points,
+                          std::vector<std::unique_ptr<Material<D>>> materials,
+                          std::unique_ptr<Transfer<D>> transfer, Vec<D> gravity)
+    : settings_(settings),
+      grid_(std::move(grid)),
+      points_(std::move(points)),
+      materials_(std::move(materials)),
+      transfer_(std::move(transfer)),
+      gravity_(gravity) {
+  for (const auto& v : points_.velocity) max_speed_ = std::max(max_speed_, v.norm());
+  if (points_.affine.size() != points_.position.size())
+    points_.affine.assign(points_.position.size(), Mat<D>::Zero());
+}
+
+template <int D>
+void Simulation<D>::step() {
+  const double dt = planned_dt();
+  cfl_number_ = dt * max_signal_speed() / grid_.cell();
+  if (cfl_number_ > 1.0) {
+    std::ostringstream what;
+    what << "CFL number " << cfl_number_ << " > 1 with dt = " << dt
+         << "; reduce solver.dt or use solver.cfl";
+    fail(-1, what.str());
+  }
+  transfer_->compute_stencils(points_, grid_);                  // stencils
+  if (settings_.scheme == UpdateScheme::usf) {                  // to_grid (USF: stress first)
+    transfer_->to_grid(points_, gravity_, grid_, false);
+    grid_.velocities_from_momentum();
+    update_materials(dt);
+    transfer_->forces_to_grid(points_, gravity_, grid_);
+  } else {
+    transfer_->to_grid(points_, gravity_, grid_, true);
+  }
+  grid_.integrate(dt);                                          // grid
+  PointFailure failure;                                         // to_points
+  max_speed_ = transfer_->to_points(grid_, dt, points_, failure);
+  if (failure.point >= 0) fail(failure.point, failure.what);
+  if (settings_.scheme == UpdateScheme::musl) transfer_->remap(points_, grid_);  // remap
+  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);              // materials
+  time_ += dt;
+  last_dt_ = dt;
+  ++step_;
+  for (auto* observer : observers_) observer->after_step(*this);  // observe
+}
+
+template <int D>
+void Simulation<D>::run(long max_steps) {
+  while (!finished() && (max_steps <= 0 || step_ < max_steps)) step();
+}
+
+template <int D>
+bool Simulation<D>::finished() const {
+  // A relative tolerance keeps round-off in Σ Δt from adding a sliver of a step at the end.
+  return time_ >= settings_.end_time * (1.0 - 1e-12);
+}
+
+template <int D>
+double Simulation<D>::planned_dt() const {
+  double dt = settings_.fixed_dt;
+  if (dt <= 0.0) dt = settings_.cfl_fraction * grid_.cell() / max_signal_speed();
+  const double remaining = settings_.end_time - time_;
+  // Land on the end time instead of overshooting it by a fraction of a step.
+  if (remaining > 0.0 && remaining < dt * (1.0 + 1e-9)) dt = remaining;
+  return dt;
+}
+
+template <int D>
+double Simulation<D>::max_signal_speed() const {
+  double wave = 0.0;
+  for (const auto& body : points_.bodies)
+    wave = std::max(wave, materials_[body.material]->max_wave_speed(points_, body.begin, body.end));
+  return wave + max_speed_;
+}
+
+template <int D>
+std::size_t Simulation<D>::memory_estimate_bytes() const {
+  // Per point: position, velocity, affine, mass/volume/density, stress, strain, body id, the
+  // velocity-gradient scratch and the stencil. Per node: five fields, plus one private
+  // scatter copy of mass, momentum and force per extra thread.
+  const std::size_t per_point = sizeof(Vec<D>) * 2 + sizeof(Mat<D>) * 2 + 3 * sizeof(double) +
+                                2 * sizeof(Sym<D>) + sizeof(int) + sizeof(double) +
+                                transfer_->stencil_bytes();
+  const std::size_t per_node = sizeof(double) + 4 * sizeof(Vec<D>);
+  const std::size_t per_copy = sizeof(double) + 2 * sizeof(Vec<D>);
+  const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
+  return per_point * points_.size() + grid_.node_count() * (per_node + (threads - 1) * per_copy);
+}
+
+template <int D>
+void Simulation<D>::update_materials(double dt) {
+  transfer_->velocity_gradient(grid_, points_, velocity_gradient_, hoop_rate_);
+  for (const auto& body : points_.bodies) {
+    const MaterialStep<D> step{points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end};
+    materials_[body.material]->update(step);
+  }
+  update_density(dt);
+}
+
+template <int D>
+void Simulation<D>::update_density(double dt) {
+  // Continuity: ρ^{k+1} = ρ^k / (1 + tr Δε) (IJNME eq 17); tr Δε = Δt (tr L + v_r/r).
+  const long n = points_.size();
+  const bool axisymmetric = settings_.kinematics == Kinematics::axisymmetric;
+  long first_bad = n;
+#pragma omp parallel for schedule(static) reduction(min : first_bad)
+  for (long p = 0; p < n; ++p) {
+    double volumetric = velocity_gradient_[p].trace();
+    if (axisymmetric) volumetric += hoop_rate_[p];
+    const double rho = points_.density[p] / (1.0 + dt * volumetric);
+    points_.density[p] = rho;
+    points_.volume[p] = points_.mass[p] / rho;
+    if (!(rho > 0.0) || !std::isfinite(rho) || !points_.stress[p].allFinite())
+      first_bad = std::min(first_bad, p);
+  }
+  if (first_bad < n) {
+    fail(first_bad, points_.stress[first_bad].allFinite() ? "non-positive or non-finite density"
+                                                          : "non-finite stress");
+  }
+}
+
+template <int D>
+SystemState<D> Simulation<D>::state() const {
+  SystemState<D> s;
+  const long n = points_.size();
+  double kinetic = 0.0, gravitational = 0.0;
+  std::array<double, D> momentum{};
+  for (long p = 0; p < n; ++p) {
+    const double m = points_.mass[p];
+    kinetic += 0.5 * m * points_.velocity[p].squaredNorm();
+    gravitational -= m * gravity_.dot(points_.position[p]);
+    for (int d = 0; d < D; ++d) momentum[d] += m * points_.velocity[p][d];
+  }
+  s.kinetic = kinetic;
+  s.gravitational = gravitational;
+  for (int d = 0; d < D; ++d) s.momentum[d] = momentum[d];
+  for (const auto& body : points_.bodies)
+    s.strain += materials_[body.material]->strain_energy(points_, body.begin, body.end);
+  return s;
+}
+
+template <int D>
+void Simulation<D>::fail(long point, const std::string& what) const {
+  NumericalError::Context c;
+  c.time = time_;
+  c.step = step_;
+  if (point >= 0) {
+    const auto& body = points_.bodies[points_.body[point]];
+    c.body = body.name;
+    c.point = point - body.begin;
+  }
+  throw NumericalError(c, what);
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+}  // namespace pellicle

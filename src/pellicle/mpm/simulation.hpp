@@ -1,0 +1,112 @@
+#pragma once
+//! Simulation<D>: owns the grid, the points, the materials and the transfers, and advances
+//! them one explicit MPM step at a time (thesis §3 and §5.3; IJNME 1999 §2.2).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pellicle/core/types.hpp"
+#include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/materials/material.hpp"
+#include "pellicle/mpm/particles.hpp"
+#include "pellicle/mpm/transfer.hpp"
+
+namespace pellicle {
+
+//! When the stress is updated relative to the grid solve.
+enum class UpdateScheme {
+  usf,   //!< update stress first, from the velocity mapped at the start of the step
+  usl,   //!< update stress last, from the Lagrangian grid velocity
+  musl,  //!< update stress last, from the convected (remapped) velocity — the seeds' scheme
+};
+
+struct SimulationSettings {
+  UpdateScheme scheme = UpdateScheme::musl;
+  Kinematics kinematics = Kinematics::plane_strain;
+  double fixed_dt = 0.0;      //!< > 0: fixed time step
+  double cfl_fraction = 0.0;  //!< > 0: Δt = fraction × h / max(c + |v|), every step
+  double end_time = 1.0;
+};
+
+//! Energies and momentum of the whole system (history.csv columns).
+template <int D>
+struct SystemState {
+  double kinetic = 0.0, strain = 0.0, internal = 0.0, gravitational = 0.0;
+  Vec<D> momentum = Vec<D>::Zero();
+  double total() const { return kinetic + strain + internal + gravitational; }
+};
+
+template <int D>
+class Simulation;
+
+//! Called after every step (output writers, probes).
+template <int D>
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void after_step(const Simulation<D>& simulation) = 0;
+};
+
+template <int D>
+class Simulation {
+ public:
+  Simulation(SimulationSettings settings, Grid<D> grid, Particles<D> points,
+             std::vector<std::unique_ptr<Material<D>>> materials,
+             std::unique_ptr<Transfer<D>> transfer, Vec<D> gravity);
+
+  //! Advance one step. Throws NumericalError when the state becomes unusable.
+  void step();
+  //! Step until the end time, or until `max_steps` steps when positive.
+  void run(long max_steps = 0);
+  bool finished() const;
+
+  void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
+  void remove_observer(StepObserver<D>* observer) {
+    std::erase(observers_, observer);
+  }
+
+  double time() const { return time_; }
+  long step_count() const { return step_; }
+  double last_dt() const { return last_dt_; }
+  //! Courant number Δt max(c + |v|)/h of the last step.
+  double cfl_number() const { return cfl_number_; }
+  //! The time step the next call of step() would take.
+  double planned_dt() const;
+  SystemState<D> state() const;
+  //! Largest material wave speed plus largest point speed (the CFL signal speed).
+  double max_signal_speed() const;
+  //! Rough memory use of points, stencils and grid (for `pellicle check`).
+  std::size_t memory_estimate_bytes() const;
+
+  const SimulationSettings& settings() const { return settings_; }
+  const Grid<D>& grid() const { return grid_; }
+  const Particles<D>& points() const { return points_; }
+  Particles<D>& points() { return points_; }
+  const Material<D>& material(int index) const { return *materials_[index]; }
+  int material_count() const { return static_cast<int>(materials_.size()); }
+  const Vec<D>& gravity() const { return gravity_; }
+
+ private:
+  void update_materials(double dt);
+  void update_density(double dt);
+  [[noreturn]] void fail(long point, const std::string& what) const;
+
+  SimulationSettings settings_;
+  Grid<D> grid_;
+  Particles<D> points_;
+  std::vector<std::unique_ptr<Material<D>>> materials_;
+  std::unique_ptr<Transfer<D>> transfer_;
+  Vec<D> gravity_;
+  std::vector<StepObserver<D>*> observers_;
+
+  std::vector<Mat<D>> velocity_gradient_;
+  std::vector<double> hoop_rate_;
+  double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;
+  long step_ = 0;
+};
+
+extern template class Simulation<2>;
+extern template class Simulation<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,88 @@
+#pragma once
+//! Particle–grid transfers (DESIGN stages `stencils`, `to_grid`, `to_points`, `remap` and the
+//! velocity gradient of `materials`). The interface is chosen once per run; the
+//! implementation (transfer_impl.hpp) is compiled per kernel, so the per-point loops are
+//! inlined and there is one virtual call per stage, never one per point.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pellicle/core/parameters.hpp"
+#include "pellicle/core/types.hpp"
+#include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/materials/material.hpp"
+#include "pellicle/mpm/particles.hpp"
+
+namespace pellicle {
+
+//! How grid velocities update point velocities.
+enum class VelocityUpdate {
+  flip,   //!< v_p += Σ N_i Δv_i (IJNME eq 11)
+  pic,    //!< v_p = Σ N_i v_i^L
+  blend,  //!< α FLIP + (1 − α) PIC
+  apic,   //!< affine PIC (Jiang et al. 2015)
+};
+
+struct TransferOptions {
+  VelocityUpdate update = VelocityUpdate::flip;
+  double flip_fraction = 1.0;  //!< α of the blend
+  Kinematics kinematics = Kinematics::plane_strain;
+};
+
+//! Where to_points found the first unusable point, if any.
+struct PointFailure {
+  long point = -1;
+  std::string what;
+};
+
+template <int D>
+class Transfer {
+ public:
+  virtual ~Transfer() = default;
+
+  //! Bytes of the per-point stencil cache.
+  virtual std::size_t stencil_bytes() const = 0;
+
+  //! Stage `stencils`: node ids, weights and gradients of every point at its current position.
+  virtual void compute_stencils(const Particles<D>& points, const Grid<D>& grid) = 0;
+
+  //! Stage `to_grid`: zero the grid, then scatter mass and momentum (with the APIC affine
+  //! term) and, when `forces`, internal and external force:
+  //!   f_i = −Σ_p V_p σ_p ∇N_i(x_p) + Σ_p m_p (g + a_body) N_i(x_p)   (IJNME eq 16)
+  //! plus, in axisymmetry, the hoop term −Σ_p V_p σ_θθ N_i / r_p on the radial component.
+  virtual void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
+                       bool forces) = 0;
+  //! Scatter only the forces onto a grid whose mass and momentum are already mapped (USF).
+  virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity,
+                              Grid<D>& grid) = 0;
+
+  //! Stage `to_points`: move points with the Lagrangian grid velocity and update their
+  //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves
+  //! the domain or becomes non-finite is reported in `failure` (the first one found).
+  virtual double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
+                           PointFailure& failure) = 0;
+
+  //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
+  virtual void remap(const Particles<D>& points, Grid<D>& grid) = 0;
+
+  //! Velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13) and, in axisymmetry, the hoop
+  //! rate v_r/r at every point, from the grid's current velocity field.
+  virtual void velocity_gradient(const Grid<D>& grid, const Particles<D>& points,
+                                 std::vector<Mat<D>>& gradient,
+                                 std::vector<double>& hoop_rate) = 0;
+};
+
+//! A kernel known by name.
+template <int D>
+struct KernelChoice {
+  std::string name;
+  std::string summary;
+  std::unique_ptr<Transfer<D>> (*make)(const TransferOptions& options, double points_per_cell);
+};
+
+//! Registered kernels (transfer.cpp: one line per kernel).
+template <int D>
+const std::vector<KernelChoice<D>>& kernel_choices();
+
+}  // namespace pellicle

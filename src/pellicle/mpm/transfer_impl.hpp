@@ -1,0 +1,207 @@
+#pragma once
+//! Kernel-templated implementation of the transfers. Included only by the per-kernel
+//! instantiation files (transfer_*.cpp), so the heavy inlining is compiled once per kernel.
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pellicle/mpm/scatter_buffers.hpp"
+#include "pellicle/mpm/shape/kernels.hpp"
+#include "pellicle/mpm/shape/stencil.hpp"
+#include "pellicle/mpm/transfer.hpp"
+
+namespace pellicle {
+
+template <int D, class Kernel>
+class TransferImpl final : public Transfer<D> {
+ public:
+  TransferImpl(const TransferOptions& options, Kernel kernel)
+      : options_(options), kernel_(kernel) {}
+
+  std::size_t stencil_bytes() const override { return sizeof(Stencil<D, Kernel>); }
+
+  void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
+    const long n = points.size();
+    stencils_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (long p = 0; p < n; ++p) compute_stencil(kernel_, grid, points.position[p], stencils_[p]);
+  }
+
+  void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
+               bool forces) override {
+    zero(grid.mass);
+    zero(grid.momentum);
+    if (forces) zero(grid.force);
+    if (apic()) {
+      if (forces) scatter<true, true, true>(points, gravity, grid);
+      else scatter<true, false, true>(points, gravity, grid);
+    } else {
+      if (forces) scatter<true, true, false>(points, gravity, grid);
+      else scatter<true, false, false>(points, gravity, grid);
+    }
+  }
+
+  void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) override {
+    zero(grid.force);
+    scatter<false, true, false>(points, gravity, grid);
+  }
+
+  double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
+                   PointFailure& failure) override {
+    const long n = points.size();
+    const auto& strides = grid.strides();
+    const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
+                         : options_.update == VelocityUpdate::blend ? options_.flip_fraction
+                                                                    : 0.0;
+    const bool apic_update = apic();
+    const double h = grid.cell();
+    const double inertia_scale =
+        Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
+    double max_speed = 0.0;
+    long first_bad = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(max : max_speed) reduction(min : first_bad)
+    for (long p = 0; p < n; ++p) {
+      const auto& s = stencils_[p];
+      Vec<D> v_lagrangian = Vec<D>::Zero();
+      Vec<D> v_change = Vec<D>::Zero();
+      Mat<D> affine = Mat<D>::Zero();
+      for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+        v_lagrangian += N * grid.velocity[node];
+        v_change += N * grid.velocity_change[node];
+        if (apic_update) {
+          if constexpr (Kernel::apic_inertia > 0.0) {
+            Vec<D> dx;
+            for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
+            affine += (N * inertia_scale) * grid.velocity[node] * dx.transpose();
+          } else {
+            affine += grid.velocity[node] * grad.transpose();
+          }
+        }
+      });
+      // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
+      const Vec<D> x = points.position[p] + dt * v_lagrangian;
+      Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
+      points.position[p] = x;
+      points.velocity[p] = v;
+      if (apic_update) points.affine[p] = affine;
+      if (!grid.contains(x) || !v.allFinite()) first_bad = std::min(first_bad, p);
+      max_speed = std::max(max_speed, v.norm());
+    }
+    if (first_bad != std::numeric_limits<long>::max()) {
+      failure.point = first_bad;
+      failure.what = points.velocity[first_bad].allFinite() && points.position[first_bad].allFinite()
+                         ? "the point left the grid domain"
+                         : "non-finite position or velocity";
+    }
+    return max_speed;
+  }
+
+  void remap(const Particles<D>& points, Grid<D>& grid) override {
+    zero(grid.momentum);
+    if (apic()) scatter<false, false, true, true>(points, Vec<D>::Zero(), grid);
+    else scatter<false, false, false, true>(points, Vec<D>::Zero(), grid);
+    grid.velocities_from_momentum();
+  }
+
+  void velocity_gradient(const Grid<D>& grid, const Particles<D>& points,
+                         std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) override {
+    const long n = points.size();
+    const auto& strides = grid.strides();
+    gradient.resize(n);
+    const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
+    if (axisymmetric) hoop_rate.resize(n);
+#pragma omp parallel for schedule(static)
+    for (long p = 0; p < n; ++p) {
+      Mat<D> L = Mat<D>::Zero();
+      double v_radial = 0.0;
+      for_each_node(stencils_[p], strides,
+                    [&](long node, double N, const Vec<D>& grad, const IVec<D>&) {
+                      L += grid.velocity[node] * grad.transpose();
+                      v_radial += N * grid.velocity[node][0];
+                    });
+      gradient[p] = L;
+      if (axisymmetric) hoop_rate[p] = v_radial / points.position[p][0];
+    }
+  }
+
+ private:
+  bool apic() const { return options_.update == VelocityUpdate::apic; }
+
+  template <class T>
+  static void zero(std::vector<T>& field) {
+    const long n = static_cast<long>(field.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      if constexpr (std::is_same_v<T, double>) field[i] = 0.0;
+      else field[i].setZero();
+    }
+  }
+
+  //! The one scatter loop: mass and momentum (WithMass), forces (WithForce), the APIC affine
+  //! momentum term (Affine); MomentumOnly is the MUSL remap (mass already on the grid).
+  template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly = false>
+  void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) {
+    constexpr bool with_momentum = WithMass || MomentumOnly;
+    const long n = points.size();
+    const auto& strides = grid.strides();
+    const double h = grid.cell();
+    const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
+    buffers_.prepare(grid);
+#pragma omp parallel
+    {
+      const int t = omp_get_thread_num();
+      NodeFields<D> out = buffers_.fields(t, grid);
+      long lo = std::numeric_limits<long>::max(), hi = -1;
+#pragma omp for schedule(static) nowait
+      for (long p = 0; p < n; ++p) {
+        const auto& s = stencils_[p];
+        const double m = points.mass[p];
+        const Vec<D> mv = m * points.velocity[p];
+        Mat<D> stress_volume;  // V_p σ_p, in-plane part
+        double hoop_over_r = 0.0;
+        Vec<D> external = Vec<D>::Zero();
+        if constexpr (WithForce) {
+          const Mat3 sigma = to_mat3<D>(points.stress[p]);
+          stress_volume = points.volume[p] * sigma.template topLeftCorner<D, D>();
+          if (axisymmetric) hoop_over_r = points.volume[p] * sigma(2, 2) / points.position[p][0];
+          external = m * (gravity + points.bodies[points.body[p]].applied_acceleration);
+        }
+        for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+          if constexpr (WithMass) out.mass[node] += N * m;
+          if constexpr (with_momentum) {
+            out.momentum[node] += N * mv;
+            if constexpr (Affine) {
+              Vec<D> dx;
+              for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
+              out.momentum[node] += (N * m) * (points.affine[p] * dx);
+            }
+          }
+          if constexpr (WithForce) {
+            out.force[node] += N * external - stress_volume * grad;
+            if (axisymmetric) out.force[node][0] -= N * hoop_over_r;
+          }
+        });
+        lo = std::min(lo, s.base);
+        hi = std::max(hi, s.base + last_node_offset(strides));
+      }
+      buffers_.touched(t, lo, hi);
+    }
+    buffers_.reduce(grid, WithMass, with_momentum, WithForce);
+  }
+
+  static long last_node_offset(const std::array<long, D>& strides) {
+    long offset = 0;
+    for (int d = 0; d < D; ++d) offset += (Kernel::width - 1) * strides[d];
+    return offset;
+  }
+
+  TransferOptions options_;
+  Kernel kernel_;
+  std::vector<Stencil<D, Kernel>> stencils_;
+  ScatterBuffers<D> buffers_;
+};
+
+}  // namespace pellicle

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The command line's contract: exit 0 on success, 2 on bad input (message names file, line,
+# key), 3 on numerical failure (message names time, step, body, point), and complete files.
+set -u
+pellicle=$1
+here=$2
+cases=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+expect() {  # expect CODE PATTERN -- command...
+  local code=$1 pattern=$2
+  shift 3
+  "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [ "$got" -ne "$code" ]; then
+    echo "FAIL: '$*' exited $got, expected $code"; cat "$work/err"; failures=$((failures + 1))
+  elif ! grep -qF -- "$pattern" "$work/out" "$work/err"; then
+    echo "FAIL: '$*' did not print: $pattern"; cat "$work/out" "$work/err"; failures=$((failures + 1))
+  else
+    echo "ok: $* -> $code"
+  fi
+}
+
+# Success: check and a short run of the default case.
+expect 0 "check     ok" -- "$pellicle" check "$cases/two_disks.toml"
+expect 0 "results   $work/default" -- "$pellicle" run --quiet --out "$work/default" --set solver.end_time=0.05
+for f in history.csv summary.json points.pvd points_000000.vtu; do
+  [ -s "$work/default/$f" ] || { echo "FAIL: $f missing after a run"; failures=$((failures + 1)); }
+done
+
+# Bad input: exit 2, nothing run, message with file:line:col and key.
+expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" check "$here/bad_key.toml"
+expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" run --out "$work/bad" "$here/bad_key.toml"
+[ -e "$work/bad" ] && { echo "FAIL: bad input created output"; failures=$((failures + 1)); }
+expect 2 "--set solver.cfl=2: solver.cfl: expected a number in (0, 1], found the integer 2" -- \
+  "$pellicle" check "$cases/two_disks.toml" --set solver.cfl=2
+expect 2 "cannot open the case file" -- "$pellicle" run "$work/missing.toml"
+expect 2 "not expected: --no-such-flag" -- "$pellicle" run --no-such-flag
+
+# Numerical failure: exit 3 with time, step, body, point; history and snapshots complete.
+expect 3 "CFL number" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"
+expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/leave" "$here/leaves_grid.toml"
+grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
+  { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }
+ls "$work/leave" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
+
+echo "$failures failure(s)"
+[ "$failures" -eq 0 ]

@@ -1,0 +1,189 @@
+// Case files: every rejected input is reported before any computation with
+// `file:line:col: key: expected …, found …`, all problems at once; --set overrides apply.
+#include <gtest/gtest.h>
+
+#include "pellicle/core/error.hpp"
+#include "support/case_text.hpp"
+
+namespace pellicle {
+namespace {
+
+const std::string kValid = R"(
+[grid]
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cell = 0.1
+
+[solver]
+end_time = 0.1
+dt = 0.001
+
+[[material]]
+name = "steel"
+model = "linear-elastic"
+density = 7800.0
+youngs_modulus = 2e11
+poisson_ratio = 0.3
+
+[[body]]
+name = "block"
+material = "steel"
+region = { shape = "box", lower = [0.2, 0.2], upper = [0.6, 0.6] }
+)";
+
+// The text of the InputError that reading `text` raises ("" when it is accepted).
+std::string problems_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    const auto source = case_source_from_text(text, "case.toml", sets);
+    if (case_dimension(*source) == 2) {
+      Case<2> c = read_case<2>(*source);
+      build_simulation<2>(c);
+    } else {
+      Case<3> c = read_case<3>(*source);
+      build_simulation<3>(c);
+    }
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(CaseReader, ValidCaseIsAccepted) { EXPECT_EQ(problems_of(kValid), ""); }
+
+TEST(CaseReader, UnknownKeyNamesFileLineAndKey) {
+  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nshceme = \"usl\""));
+  EXPECT_EQ(msg, "case.toml:10:1: solver.shceme: unknown key (misspelt, or not used by this model)");
+}
+
+TEST(CaseReader, WrongTypeSaysExpectedAndFound) {
+  const std::string msg = problems_of(replace(kValid, "cell = 0.1", "cell = \"fine\""));
+  EXPECT_EQ(msg, "case.toml:5:8: grid.cell: expected a number > 0, found the string \"fine\"");
+}
+
+TEST(CaseReader, MissingRequiredValue) {
+  const std::string msg = problems_of(replace(kValid, "end_time = 0.1\n", ""));
+  EXPECT_NE(msg.find("solver.end_time: expected a number > 0, found nothing (required)"),
+            std::string::npos) << msg;
+}
+
+TEST(CaseReader, OutOfRangeValue) {
+  const std::string msg = problems_of(replace(kValid, "poisson_ratio = 0.3", "poisson_ratio = 0.5"));
+  EXPECT_EQ(msg, "case.toml:16:17: material[0].poisson_ratio: expected a number in (-1, 0.5), "
+                 "found the number 0.5");
+}
+
+TEST(CaseReader, UnknownChoiceListsTheOptions) {
+  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nkernel = \"cubic\""));
+  EXPECT_EQ(msg, "case.toml:10:10: solver.kernel: expected one of \"linear\", \"ugimp\", "
+                 "\"quadratic-bspline\" or \"cubic-bspline\", found the string \"cubic\"");
+}
+
+TEST(CaseReader, UnknownModelAndMaterialReference) {
+  std::string text = replace(kValid, "model = \"linear-elastic\"", "model = \"elastic\"");
+  text = replace(text, "material = \"steel\"", "material = \"iron\"");
+  const std::string msg = problems_of(text);
+  EXPECT_NE(msg.find("material[0].model: expected one of \"linear-elastic\""), std::string::npos);
+  EXPECT_NE(msg.find("body[0].material: expected the name of a [[material]], found \"iron\""),
+            std::string::npos) << msg;
+  // The rest of the material table is not reported as unknown once its model is unknown.
+  EXPECT_EQ(msg.find("youngs_modulus"), std::string::npos) << msg;
+}
+
+TEST(CaseReader, AllProblemsAreReportedTogether) {
+  std::string text = replace(kValid, "cell = 0.1", "cell = -1");
+  text = replace(text, "density = 7800.0", "density = 0");
+  const std::string msg = problems_of(text);
+  EXPECT_NE(msg.find("grid.cell: expected a number > 0, found the integer -1"), std::string::npos);
+  EXPECT_NE(msg.find("material[0].density: expected a number > 0, found the integer 0"),
+            std::string::npos) << msg;
+}
+
+TEST(CaseReader, GridMustHoldWholeCells) {
+  const std::string msg = problems_of(replace(kValid, "cell = 0.1", "cell = 0.3"));
+  EXPECT_NE(msg.find("grid.cell: expected (upper − lower)/cell to be a whole number"),
+            std::string::npos) << msg;
+}
+
+TEST(CaseReader, DtAndCflAreExclusive) {
+  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\ncfl = 0.5"));
+  EXPECT_NE(msg.find("solver.cfl: give either dt (fixed) or cfl, not both"), std::string::npos);
+}
+
+TEST(CaseReader, VectorLengthFollowsDimension) {
+  const std::string msg = problems_of(replace(kValid, "lower = [0.2, 0.2]", "lower = [0.2, 0.2, 0.2]"));
+  EXPECT_NE(msg.find("body[0].region.lower: expected an array of 2 numbers"), std::string::npos)
+      << msg;
+}
+
+TEST(CaseReader, UnknownRegionShape) {
+  const std::string msg = problems_of(replace(kValid, "shape = \"box\"", "shape = \"cube\""));
+  EXPECT_NE(msg.find("body[0].region.shape: expected one of \"box\", \"disk\""), std::string::npos);
+  EXPECT_EQ(msg.find("region.lower"), std::string::npos) << msg;  // no follow-on noise
+}
+
+TEST(CaseReader, BodyOutsideTheGridHoldsNoPoints) {
+  const std::string msg = problems_of(
+      replace(kValid, "lower = [0.2, 0.2], upper = [0.6, 0.6]", "lower = [2.0, 2.0], upper = [3.0, 3.0]"));
+  EXPECT_NE(msg.find("body 'block': the region holds no point inside the grid"), std::string::npos)
+      << msg;
+}
+
+TEST(CaseReader, AxisymmetricAxisMustBeSlip) {
+  std::string text = replace(kValid, "cell = 0.1", "cell = 0.1\nkinematics = \"axisymmetric\"\n"
+                                                   "boundary = { x_min = \"fixed\" }");
+  EXPECT_NE(problems_of(text).find("grid.boundary.x_min: expected \"slip\": x_min is the symmetry "
+                                   "axis r = 0"),
+            std::string::npos);
+  text = replace(kValid, "lower = [0.0, 0.0]", "lower = [-1.0, 0.0]");
+  text = replace(text, "cell = 0.1", "cell = 0.1\nkinematics = \"axisymmetric\"");
+  EXPECT_NE(problems_of(text).find("grid.lower: expected radius lower[0] >= 0"), std::string::npos);
+}
+
+TEST(CaseReader, FlipFractionOnlyWithBlend) {
+  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nflip_fraction = 0.9"));
+  EXPECT_NE(msg.find("solver.flip_fraction: only used with velocity_update = \"blend\""),
+            std::string::npos);
+  EXPECT_EQ(problems_of(replace(kValid, "dt = 0.001",
+                                "dt = 0.001\nvelocity_update = \"blend\"\nflip_fraction = 0.9")),
+            "");
+}
+
+TEST(CaseReader, SyntaxErrorHasItsLocation) {
+  const std::string msg = problems_of(replace(kValid, "cell = 0.1", "cell = = 0.1"));
+  EXPECT_EQ(msg.rfind("case.toml:5:", 0), 0u) << msg;
+}
+
+TEST(CaseReader, DimensionComesFromGridLower) {
+  const std::string msg = problems_of(replace(kValid, "lower = [0.0, 0.0]", "lower = [0.0]"));
+  EXPECT_EQ(msg, "case.toml:3:9: grid.lower: expected an array of 2 (2D) or 3 (3D) numbers, found "
+                 "an array of 1 elements");
+}
+
+TEST(CaseReader, SetOverridesAKey) {
+  const auto source = case_source_from_text(
+      kValid, "case.toml", {"solver.end_time=0.5", "solver.scheme=usl", "body[0].velocity=[1, 2]"});
+  Case<2> c = read_case<2>(*source);
+  EXPECT_EQ(c.settings.end_time, 0.5);
+  EXPECT_EQ(c.settings.scheme, UpdateScheme::usl);
+  EXPECT_EQ(c.bodies[0].velocity, Vec2(1, 2));
+}
+
+TEST(CaseReader, BadSetIsReportedWithTheSetting) {
+  EXPECT_EQ(problems_of(kValid, {"solver.end_time"}),
+            "--set solver.end_time: expected key=value, e.g. --set solver.end_time=0.5");
+  EXPECT_EQ(problems_of(kValid, {"solver.end_time=-2"}),
+            "--set solver.end_time=-2: solver.end_time: expected a number > 0, found the "
+            "integer -2");
+  EXPECT_EQ(problems_of(kValid, {"body[3].velocity=[0,0]"}),
+            "--set body[3].velocity=[0,0]: body[3].velocity: no element 3 in body");
+}
+
+}  // namespace
+}  // namespace pellicle
