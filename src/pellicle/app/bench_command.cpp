@@ -3,14 +3,11 @@
 #include <omp.h>
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/core/error.hpp"
-#include "pellicle/io/build.hpp"
-#include "pellicle/io/case.hpp"
+#include "pellicle/io/bench_case.hpp"
 
 namespace pellicle {
 
@@ -23,17 +20,8 @@ struct BenchResult {
 };
 
 BenchResult bench_two_disks(long target_points, long steps, int threads) {
-  // Two disks of radius 0.2 hold 2 × π 0.2² of area; 2 × 2 points per cell.
-  const double area = 2.0 * std::numbers::pi * 0.04;
-  const long cells = std::lround(std::sqrt(target_points / (4.0 * area)));
-  const std::vector<std::string> overrides = {
-      "grid.cell=" + std::to_string(1.0 / cells), "solver.kernel=linear",
-      "solver.scheme=musl", "solver.velocity_update=flip", "solver.end_time=1000",
-      "body[0].points_per_cell=2", "body[1].points_per_cell=2"};
-  const auto source = load_case_source("", overrides);
-  Case<2> c = read_case<2>(*source);
   omp_set_num_threads(threads);
-  auto simulation = build_simulation<2>(c);
+  auto simulation = make_bench_two_disks(target_points, "linear", "flip");
   simulation->run(3);  // warm caches and scatter buffers
   const auto start = std::chrono::steady_clock::now();
   simulation->run(3 + steps);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Geometry>
+
 #include "pellicle/geometry/fill.hpp"
 
 namespace pellicle {
@@ -32,13 +34,22 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
     const Sym<D> stress =
         b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);
     double body_mass = 0.0;
+    Vec<D> first_moment = Vec<D>::Zero();
     for (const auto& x : positions) {
       const double m =
           material.density() * point_volume<D>(c.cell, b.points_per_cell, c.settings.kinematics, x);
       points.add(x, b.velocity, m, material.density(), stress, strain);
       body_mass += m;
+      first_moment += m * x;
     }
-    points.bodies.back().applied_acceleration = b.external_force / body_mass;
+    auto& body = points.bodies.back();
+    body.applied_acceleration = b.external_force / body_mass;
+    const Vec<D> center = b.rotation_center.value_or(first_moment / body_mass);
+    for (long p = body.begin; p < body.end; ++p) {
+      Vec3 r = Vec3::Zero();
+      r.template head<D>() = points.position[p] - center;
+      points.velocity[p] += b.angular_velocity.cross(r).template head<D>();
+    }
   }
   if (!problems.empty()) throw InputError(problems);
 

@@ -293,6 +293,12 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     b.material = it == c.material_names.end() ? 0 : static_cast<int>(it - c.material_names.begin());
     b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
     b.velocity = vec_or<D>(*t, "velocity", Vec<D>::Zero());
+    if constexpr (D == 2) {
+      b.angular_velocity.z() = t->number_or("angular_velocity", 0.0, NumberRange::any());
+    } else {
+      b.angular_velocity = vec_or<3>(*t, "angular_velocity", Vec3::Zero());
+    }
+    if (t->has("rotation_center")) b.rotation_center = vec<D>(*t, "rotation_center");
     b.external_force = vec_or<D>(*t, "external_force", Vec<D>::Zero());
     if (t->has("initial_stress") && t->has("initial_strain"))
       t->fail("initial_strain", "give either initial_stress or initial_strain, not both");

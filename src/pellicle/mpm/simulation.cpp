@@ -101,33 +101,11 @@ std::size_t Simulation<D>::memory_estimate_bytes() const {
 
 template <int D>
 void Simulation<D>::update_materials(double dt) {
-  transfer_->velocity_gradient(grid_, points_, velocity_gradient_, hoop_rate_);
+  const long bad = transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
+  if (bad >= 0) fail(bad, "non-positive or non-finite density");
   for (const auto& body : points_.bodies) {
     const MaterialStep<D> step{points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end};
     materials_[body.material]->update(step);
-  }
-  update_density(dt);
-}
-
-template <int D>
-void Simulation<D>::update_density(double dt) {
-  // Continuity: ρ^{k+1} = ρ^k / (1 + tr Δε) (IJNME eq 17); tr Δε = Δt (tr L + v_r/r).
-  const long n = points_.size();
-  const bool axisymmetric = settings_.kinematics == Kinematics::axisymmetric;
-  long first_bad = n;
-#pragma omp parallel for schedule(static) reduction(min : first_bad)
-  for (long p = 0; p < n; ++p) {
-    double volumetric = velocity_gradient_[p].trace();
-    if (axisymmetric) volumetric += hoop_rate_[p];
-    const double rho = points_.density[p] / (1.0 + dt * volumetric);
-    points_.density[p] = rho;
-    points_.volume[p] = points_.mass[p] / rho;
-    if (!(rho > 0.0) || !std::isfinite(rho) || !points_.stress[p].allFinite())
-      first_bad = std::min(first_bad, p);
-  }
-  if (first_bad < n) {
-    fail(first_bad, points_.stress[first_bad].allFinite() ? "non-positive or non-finite density"
-                                                          : "non-finite stress");
   }
 }
 
@@ -143,7 +121,7 @@ SystemState<D> Simulation<D>::state() const {
     gravitational -= m * gravity_.dot(points_.position[p]);
     for (int d = 0; d < D; ++d) momentum[d] += m * points_.velocity[p][d];
   }
-  s.kinetic = kinetic;
+  s.kinetic = kinetic + transfer_->affine_kinetic_energy(points_, grid_);
   s.gravitational = gravitational;
   for (int d = 0; d < D; ++d) s.momentum[d] = momentum[d];
   for (const auto& body : points_.bodies)

@@ -32,6 +32,8 @@ struct SimulationSettings {
 //! Energies and momentum of the whole system (history.csv columns).
 template <int D>
 struct SystemState {
+  //! Kinetic energy includes the APIC affine part; strain is the stored elastic energy;
+  //! internal is thermal (gases); gravitational is −Σ m g·x.
   double kinetic = 0.0, strain = 0.0, internal = 0.0, gravitational = 0.0;
   Vec<D> momentum = Vec<D>::Zero();
   double total() const { return kinetic + strain + internal + gravitational; }
@@ -89,7 +91,6 @@ class Simulation {
 
  private:
   void update_materials(double dt);
-  void update_density(double dt);
   [[noreturn]] void fail(long point, const std::string& what) const;
 
   SimulationSettings settings_;

@@ -41,6 +41,11 @@ class Transfer {
  public:
   virtual ~Transfer() = default;
 
+  //! Kinetic energy of the APIC affine velocity field, Σ_p ½ m_p Σ_d D_p,dd |C_p e_d|², with
+  //! D_p = Σ_i N_i (x_i − x_p)(x_i − x_p)ᵀ the kernel's inertia at the current position
+  //! (Jiang et al. 2015); zero for the other velocity updates.
+  virtual double affine_kinetic_energy(const Particles<D>& points, const Grid<D>& grid) const = 0;
+
   //! Bytes of the per-point stencil cache.
   virtual std::size_t stencil_bytes() const = 0;
 
@@ -66,11 +71,13 @@ class Transfer {
   //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
   virtual void remap(const Particles<D>& points, Grid<D>& grid) = 0;
 
-  //! Velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13) and, in axisymmetry, the hoop
-  //! rate v_r/r at every point, from the grid's current velocity field.
-  virtual void velocity_gradient(const Grid<D>& grid, const Particles<D>& points,
-                                 std::vector<Mat<D>>& gradient,
-                                 std::vector<double>& hoop_rate) = 0;
+  //! Point kinematics of stage `materials`, from the grid's current velocity field: the
+  //! velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13), in axisymmetry the hoop rate
+  //! v_r/r, and the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ.
+  //! Returns the first point whose density became non-positive or non-finite, or −1.
+  virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
+                                std::vector<Mat<D>>& gradient,
+                                std::vector<double>& hoop_rate) = 0;
 };
 
 //! A kernel known by name.

@@ -21,6 +21,27 @@ class TransferImpl final : public Transfer<D> {
   TransferImpl(const TransferOptions& options, Kernel kernel)
       : options_(options), kernel_(kernel) {}
 
+  double affine_kinetic_energy(const Particles<D>& points, const Grid<D>& grid) const override {
+    if (!apic()) return 0.0;
+    const long n = points.size();
+    const double h = grid.cell();
+    double energy = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : energy)
+    for (long p = 0; p < n; ++p) {
+      const Vec<D> xi = grid.to_cell_units(points.position[p]);
+      double e = 0.0;
+      for (int d = 0; d < D; ++d) {
+        double w[Kernel::width], dw[Kernel::width];
+        const int first = kernel_.fill(xi[d], w, dw);
+        double inertia = 0.0;  // D_dd / h²: tensor-product kernels give a diagonal D
+        for (int a = 0; a < Kernel::width; ++a) inertia += w[a] * (first + a - xi[d]) * (first + a - xi[d]);
+        e += inertia * points.affine[p].col(d).squaredNorm();
+      }
+      energy += 0.5 * points.mass[p] * h * h * e;
+    }
+    return energy;
+  }
+
   std::size_t stencil_bytes() const override { return sizeof(Stencil<D, Kernel>); }
 
   void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
@@ -106,25 +127,36 @@ class TransferImpl final : public Transfer<D> {
     grid.velocities_from_momentum();
   }
 
-  void velocity_gradient(const Grid<D>& grid, const Particles<D>& points,
-                         std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) override {
+  long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
+                        std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) override {
     const long n = points.size();
     const auto& strides = grid.strides();
     gradient.resize(n);
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     if (axisymmetric) hoop_rate.resize(n);
-#pragma omp parallel for schedule(static)
+    long first_bad = n;
+#pragma omp parallel for schedule(static) reduction(min : first_bad)
     for (long p = 0; p < n; ++p) {
       Mat<D> L = Mat<D>::Zero();
       double v_radial = 0.0;
       for_each_node(stencils_[p], strides,
                     [&](long node, double N, const Vec<D>& grad, const IVec<D>&) {
                       L += grid.velocity[node] * grad.transpose();
-                      v_radial += N * grid.velocity[node][0];
+                      if (axisymmetric) v_radial += N * grid.velocity[node][0];
                     });
       gradient[p] = L;
-      if (axisymmetric) hoop_rate[p] = v_radial / points.position[p][0];
+      double volumetric = L.trace();
+      if (axisymmetric) {
+        hoop_rate[p] = v_radial / points.position[p][0];
+        volumetric += hoop_rate[p];
+      }
+      const double rho = points.density[p] / (1.0 + dt * volumetric);
+      points.density[p] = rho;
+      points.volume[p] = points.mass[p] / rho;
+      if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()))
+        first_bad = std::min(first_bad, p);
     }
+    return first_bad < n ? first_bad : -1;
   }
 
  private:
