@@ -32,3 +32,33 @@ auto body_mean(const Particles<D>& p, int body, F&& value) {
 }
 
 }  // namespace pellicle::testing
+
+#include <fstream>
+#include <sstream>
+
+namespace pellicle::testing {
+
+//! Text of a case file under cases/.
+inline std::string case_file(const std::string& name) {
+  std::ifstream in(std::string(PELLICLE_CASES_DIR) + "/" + name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+//! Mass-weighted mean velocity of a body.
+template <int D>
+Vec<D> body_velocity(const Simulation<D>& s, int body) {
+  return body_mean(s.points(), body, [&](long p) { return Vec<D>(s.points().velocity[p]); });
+}
+
+//! Times at which a sampled signal changes sign (linear interpolation between samples).
+inline std::vector<double> sign_changes(const std::vector<double>& t, const std::vector<double>& f) {
+  std::vector<double> out;
+  for (std::size_t i = 1; i < f.size(); ++i)
+    if ((f[i - 1] < 0.0) != (f[i] < 0.0))
+      out.push_back(t[i - 1] + (t[i] - t[i - 1]) * f[i - 1] / (f[i - 1] - f[i]));
+  return out;
+}
+
+}  // namespace pellicle::testing

@@ -44,11 +44,12 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
     }
     auto& body = points.bodies.back();
     body.applied_acceleration = b.external_force / body_mass;
-    const Vec<D> center = b.rotation_center.value_or(first_moment / body_mass);
+    const Vec<D> center = b.center.value_or(first_moment / body_mass);
     for (long p = body.begin; p < body.end; ++p) {
       Vec3 r = Vec3::Zero();
       r.template head<D>() = points.position[p] - center;
-      points.velocity[p] += b.angular_velocity.cross(r).template head<D>();
+      points.velocity[p] += b.angular_velocity.cross(r).template head<D>() +
+                            b.velocity_gradient * r.template head<D>();
     }
   }
   if (!problems.empty()) throw InputError(problems);

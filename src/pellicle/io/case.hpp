@@ -30,9 +30,10 @@ struct BodySpec {
   int material = 0;
   int points_per_cell = 2;  //!< per direction
   Vec<D> velocity = Vec<D>::Zero();
-  //! Initial rigid rotation v += ω × (x − c): 2D uses the z component only.
+  //! Initial velocity field v = velocity + ω × (x − c) + G (x − c); 2D uses ω's z only.
   Vec3 angular_velocity = Vec3::Zero();
-  std::optional<Vec<D>> rotation_center;  //!< default: the body's centre of mass
+  Mat<D> velocity_gradient = Mat<D>::Zero();
+  std::optional<Vec<D>> center;  //!< c; default: the body's centre of mass
   Vec<D> external_force = Vec<D>::Zero();  //!< total, spread over the body by mass
   std::optional<Sym<D>> initial_stress, initial_strain;
   RegionPtr<D> region;

@@ -239,6 +239,10 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   std::vector<std::string> kernels;
   for (const auto& k : kernel_choices<D>()) kernels.push_back(k.name);
   c.kernel = s->choice("kernel", kernels, "linear");
+  if (c.transfer.update == VelocityUpdate::apic && c.kernel == "linear")
+    s->fail("velocity_update",
+            "APIC is not offered with the linear kernel: it goes unstable at free surfaces (the "
+            "two-disk test); use kernel = \"quadratic-bspline\", \"cubic-bspline\" or \"ugimp\"");
 
   c.settings.end_time = s->number("end_time", NumberRange::positive());
   if (s->has("dt") && s->has("cfl")) s->fail("cfl", "give either dt (fixed) or cfl, not both");
@@ -298,7 +302,15 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     } else {
       b.angular_velocity = vec_or<3>(*t, "angular_velocity", Vec3::Zero());
     }
-    if (t->has("rotation_center")) b.rotation_center = vec<D>(*t, "rotation_center");
+    if (t->has("velocity_gradient")) {
+      const auto rows = t->number_lists("velocity_gradient", D);
+      if (static_cast<int>(rows.size()) != D)
+        t->fail("velocity_gradient", "expected " + std::to_string(D) + " rows of " +
+                                         std::to_string(D) + " numbers");
+      for (int i = 0; i < std::min<int>(D, rows.size()); ++i)
+        for (int j = 0; j < D; ++j) b.velocity_gradient(i, j) = rows[i][j];
+    }
+    if (t->has("center")) b.center = vec<D>(*t, "center");
     b.external_force = vec_or<D>(*t, "external_force", Vec<D>::Zero());
     if (t->has("initial_stress") && t->has("initial_strain"))
       t->fail("initial_strain", "give either initial_stress or initial_strain, not both");
