@@ -26,6 +26,15 @@ struct BenchOptions {
 
 int command_bench(const BenchOptions& options);
 
+struct ValidateOptions {
+  bool full = false;
+  std::vector<std::string> only;  //!< problem names; empty: all
+  std::string out_dir;            //!< empty: docs/validation (full) or results/validation
+};
+
+//! Exit code 1 when a check is outside its accepted range.
+int command_validate(const ValidateOptions& options);
+
 //! Print an input problem list to stderr; returns kExitBadInput.
 int report_input_error(const std::exception& error);
 

@@ -41,6 +41,13 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--steps", bench.steps, "Timed steps")->check(CLI::Range(1L, 100000L));
   bench_cmd->add_option("--threads", bench.threads, "Thread counts to measure (default: 1 2)");
 
+  ValidateOptions validate;
+  auto* validate_cmd = app.add_subcommand(
+      "validate", "Run the validation problems against their references; write a report and plots");
+  validate_cmd->add_flag("--full", validate.full, "Full resolution (writes docs/validation by default)");
+  validate_cmd->add_option("--only", validate.only, "Run only these problems")->allow_extra_args(false);
+  validate_cmd->add_option("--out", validate.out_dir, "Output directory");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -52,6 +59,7 @@ int main(int argc, char** argv) {
     if (*run_cmd) return command_run(run);
     if (*check_cmd) return command_check(check);
     if (*bench_cmd) return command_bench(bench);
+    if (*validate_cmd) return command_validate(validate);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     return 1;

@@ -9,7 +9,12 @@
 namespace pellicle {
 
 //! Process exit codes of the `pellicle` command.
-enum ExitCode : int { kExitOk = 0, kExitBadInput = 2, kExitNumericalFailure = 3 };
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitCheckFailed = 1,  //!< `pellicle validate`: a measured value outside its accepted range
+  kExitBadInput = 2,
+  kExitNumericalFailure = 3,
+};
 
 //! Where in an input a problem was found. Line and column are 1-based; 0 means unknown.
 struct SourceLocation {

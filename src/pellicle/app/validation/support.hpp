@@ -1,0 +1,37 @@
+#pragma once
+//! What the validation problems share: building a simulation from a built-in case, and body
+//! averages.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "pellicle/io/build.hpp"
+#include "pellicle/io/builtin_cases.hpp"
+#include "pellicle/io/case.hpp"
+
+namespace pellicle::validation {
+
+template <int D>
+std::unique_ptr<Simulation<D>> builtin_simulation(const std::string& file,
+                                                  const std::vector<std::string>& overrides) {
+  const auto source = case_source_from_text(builtin_case(file), file, overrides);
+  Case<D> c = read_case<D>(*source);
+  return build_simulation<D>(c);
+}
+
+//! Mass-weighted mean velocity of a body.
+template <int D>
+Vec<D> body_velocity(const Simulation<D>& s, int body) {
+  const auto& p = s.points();
+  const auto& b = p.bodies[body];
+  Vec<D> momentum = Vec<D>::Zero();
+  double mass = 0.0;
+  for (long i = b.begin; i < b.end; ++i) {
+    momentum += p.mass[i] * p.velocity[i];
+    mass += p.mass[i];
+  }
+  return momentum / mass;
+}
+
+}  // namespace pellicle::validation

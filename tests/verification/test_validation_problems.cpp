@@ -1,0 +1,40 @@
+// The validation problems (src/pellicle/app/validation/) at fast resolution: every check must
+// lie in its accepted range. `pellicle validate --full` runs the same problems refined.
+//   bar-vibration    free–free bar period within 1% of 2L/c, every kernel, 2D and 3D
+//   cylinder-radial  axisymmetric radial modes: reversal times within 1% of the period
+//   two-disks        Sulsky et al. 1994: APIC energy within 2% through the collision
+//   two-bars-stick   IJNME 1999 Fig. 18: the bars stick with the single velocity field
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "pellicle/app/validation/problem.hpp"
+
+namespace pellicle::validation {
+namespace {
+
+void expect_all_checks_pass(const std::string& name) {
+  const Problem* problem = find_problem(name);
+  ASSERT_NE(problem, nullptr);
+  const Outcome outcome = problem->run(Resolution::fast);
+  ASSERT_FALSE(outcome.checks.empty());
+  for (const auto& check : outcome.checks) {
+    std::printf("%s: %s\n", name.c_str(), check.describe().c_str());
+    EXPECT_TRUE(check.passed()) << check.describe();
+  }
+}
+
+TEST(Validation, BarVibration) { expect_all_checks_pass("bar-vibration"); }
+TEST(Validation, CylinderRadialVibration) { expect_all_checks_pass("cylinder-radial"); }
+TEST(Validation, TwoDisks) { expect_all_checks_pass("two-disks"); }
+TEST(Validation, TwoBarsStick) { expect_all_checks_pass("two-bars-stick"); }
+
+TEST(Validation, EveryProblemHasAName) {
+  for (const auto& p : problems()) {
+    EXPECT_EQ(find_problem(p.name), &p);
+    EXPECT_FALSE(p.source.empty()) << p.name;
+  }
+}
+
+}  // namespace
+}  // namespace pellicle::validation
