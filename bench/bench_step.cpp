@@ -19,8 +19,11 @@ void step(benchmark::State& state, const std::string& kernel, const std::string&
 BENCHMARK_CAPTURE(step, linear_flip, "linear", "flip")->Arg(250000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(step, linear_apic, "linear", "apic")->Arg(250000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(step, quadratic_flip, "quadratic-bspline", "flip")
-    ->Arg(250000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(step, cubic_flip, "cubic-bspline", "flip")->Arg(250000)->Unit(benchmark::kMillisecond);
+    ->Arg(250000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(step, cubic_flip, "cubic-bspline", "flip")
+    ->Arg(250000)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

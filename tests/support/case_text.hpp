@@ -11,8 +11,8 @@
 namespace pellicle::testing {
 
 template <int D>
-std::unique_ptr<Simulation<D>> simulation_from_text(const std::string& text,
-                                                    const std::vector<std::string>& overrides = {}) {
+std::unique_ptr<Simulation<D>> simulation_from_text(
+    const std::string& text, const std::vector<std::string>& overrides = {}) {
   const auto source = case_source_from_text(text, "<test case>", overrides);
   Case<D> c = read_case<D>(*source);
   return build_simulation<D>(c);
@@ -53,7 +53,8 @@ Vec<D> body_velocity(const Simulation<D>& s, int body) {
 }
 
 //! Times at which a sampled signal changes sign (linear interpolation between samples).
-inline std::vector<double> sign_changes(const std::vector<double>& t, const std::vector<double>& f) {
+inline std::vector<double> sign_changes(const std::vector<double>& t,
+                                        const std::vector<double>& f) {
   std::vector<double> out;
   for (std::size_t i = 1; i < f.size(); ++i)
     if ((f[i - 1] < 0.0) != (f[i] < 0.0))

@@ -55,11 +55,15 @@ std::string replace(std::string text, const std::string& from, const std::string
   return text;
 }
 
-TEST(CaseReader, ValidCaseIsAccepted) { EXPECT_EQ(problems_of(kValid), ""); }
+TEST(CaseReader, ValidCaseIsAccepted) {
+  EXPECT_EQ(problems_of(kValid), "");
+}
 
 TEST(CaseReader, UnknownKeyNamesFileLineAndKey) {
-  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nshceme = \"usl\""));
-  EXPECT_EQ(msg, "case.toml:10:1: solver.shceme: unknown key (misspelt, or not used by this model)");
+  const std::string msg =
+      problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nshceme = \"usl\""));
+  EXPECT_EQ(msg,
+            "case.toml:10:1: solver.shceme: unknown key (misspelt, or not used by this model)");
 }
 
 TEST(CaseReader, WrongTypeSaysExpectedAndFound) {
@@ -70,19 +74,24 @@ TEST(CaseReader, WrongTypeSaysExpectedAndFound) {
 TEST(CaseReader, MissingRequiredValue) {
   const std::string msg = problems_of(replace(kValid, "end_time = 0.1\n", ""));
   EXPECT_NE(msg.find("solver.end_time: expected a number > 0, found nothing (required)"),
-            std::string::npos) << msg;
+            std::string::npos)
+      << msg;
 }
 
 TEST(CaseReader, OutOfRangeValue) {
-  const std::string msg = problems_of(replace(kValid, "poisson_ratio = 0.3", "poisson_ratio = 0.5"));
-  EXPECT_EQ(msg, "case.toml:16:17: material[0].poisson_ratio: expected a number in (-1, 0.5), "
-                 "found the number 0.5");
+  const std::string msg =
+      problems_of(replace(kValid, "poisson_ratio = 0.3", "poisson_ratio = 0.5"));
+  EXPECT_EQ(msg,
+            "case.toml:16:17: material[0].poisson_ratio: expected a number in (-1, 0.5), "
+            "found the number 0.5");
 }
 
 TEST(CaseReader, UnknownChoiceListsTheOptions) {
-  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nkernel = \"cubic\""));
-  EXPECT_EQ(msg, "case.toml:10:10: solver.kernel: expected one of \"linear\", \"ugimp\", "
-                 "\"quadratic-bspline\" or \"cubic-bspline\", found the string \"cubic\"");
+  const std::string msg =
+      problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nkernel = \"cubic\""));
+  EXPECT_EQ(msg,
+            "case.toml:10:10: solver.kernel: expected one of \"linear\", \"ugimp\", "
+            "\"quadratic-bspline\" or \"cubic-bspline\", found the string \"cubic\"");
 }
 
 TEST(CaseReader, UnknownModelAndMaterialReference) {
@@ -91,7 +100,8 @@ TEST(CaseReader, UnknownModelAndMaterialReference) {
   const std::string msg = problems_of(text);
   EXPECT_NE(msg.find("material[0].model: expected one of \"linear-elastic\""), std::string::npos);
   EXPECT_NE(msg.find("body[0].material: expected the name of a [[material]], found \"iron\""),
-            std::string::npos) << msg;
+            std::string::npos)
+      << msg;
   // The rest of the material table is not reported as unknown once its model is unknown.
   EXPECT_EQ(msg.find("youngs_modulus"), std::string::npos) << msg;
 }
@@ -102,13 +112,15 @@ TEST(CaseReader, AllProblemsAreReportedTogether) {
   const std::string msg = problems_of(text);
   EXPECT_NE(msg.find("grid.cell: expected a number > 0, found the integer -1"), std::string::npos);
   EXPECT_NE(msg.find("material[0].density: expected a number > 0, found the integer 0"),
-            std::string::npos) << msg;
+            std::string::npos)
+      << msg;
 }
 
 TEST(CaseReader, GridMustHoldWholeCells) {
   const std::string msg = problems_of(replace(kValid, "cell = 0.1", "cell = 0.3"));
   EXPECT_NE(msg.find("grid.cell: expected (upper − lower)/cell to be a whole number"),
-            std::string::npos) << msg;
+            std::string::npos)
+      << msg;
 }
 
 TEST(CaseReader, DtAndCflAreExclusive) {
@@ -117,7 +129,8 @@ TEST(CaseReader, DtAndCflAreExclusive) {
 }
 
 TEST(CaseReader, VectorLengthFollowsDimension) {
-  const std::string msg = problems_of(replace(kValid, "lower = [0.2, 0.2]", "lower = [0.2, 0.2, 0.2]"));
+  const std::string msg =
+      problems_of(replace(kValid, "lower = [0.2, 0.2]", "lower = [0.2, 0.2, 0.2]"));
   EXPECT_NE(msg.find("body[0].region.lower: expected an array of 2 numbers"), std::string::npos)
       << msg;
 }
@@ -129,15 +142,16 @@ TEST(CaseReader, UnknownRegionShape) {
 }
 
 TEST(CaseReader, BodyOutsideTheGridHoldsNoPoints) {
-  const std::string msg = problems_of(
-      replace(kValid, "lower = [0.2, 0.2], upper = [0.6, 0.6]", "lower = [2.0, 2.0], upper = [3.0, 3.0]"));
+  const std::string msg = problems_of(replace(kValid, "lower = [0.2, 0.2], upper = [0.6, 0.6]",
+                                              "lower = [2.0, 2.0], upper = [3.0, 3.0]"));
   EXPECT_NE(msg.find("body 'block': the region holds no point inside the grid"), std::string::npos)
       << msg;
 }
 
 TEST(CaseReader, AxisymmetricAxisMustBeSlip) {
-  std::string text = replace(kValid, "cell = 0.1", "cell = 0.1\nkinematics = \"axisymmetric\"\n"
-                                                   "boundary = { x_min = \"fixed\" }");
+  std::string text = replace(kValid, "cell = 0.1",
+                             "cell = 0.1\nkinematics = \"axisymmetric\"\n"
+                             "boundary = { x_min = \"fixed\" }");
   EXPECT_NE(problems_of(text).find("grid.boundary.x_min: expected \"slip\": x_min is the symmetry "
                                    "axis r = 0"),
             std::string::npos);
@@ -147,7 +161,8 @@ TEST(CaseReader, AxisymmetricAxisMustBeSlip) {
 }
 
 TEST(CaseReader, FlipFractionOnlyWithBlend) {
-  const std::string msg = problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nflip_fraction = 0.9"));
+  const std::string msg =
+      problems_of(replace(kValid, "dt = 0.001", "dt = 0.001\nflip_fraction = 0.9"));
   EXPECT_NE(msg.find("solver.flip_fraction: only used with velocity_update = \"blend\""),
             std::string::npos);
   EXPECT_EQ(problems_of(replace(kValid, "dt = 0.001",
@@ -162,8 +177,9 @@ TEST(CaseReader, SyntaxErrorHasItsLocation) {
 
 TEST(CaseReader, DimensionComesFromGridLower) {
   const std::string msg = problems_of(replace(kValid, "lower = [0.0, 0.0]", "lower = [0.0]"));
-  EXPECT_EQ(msg, "case.toml:3:9: grid.lower: expected an array of 2 (2D) or 3 (3D) numbers, found "
-                 "an array of 1 elements");
+  EXPECT_EQ(msg,
+            "case.toml:3:9: grid.lower: expected an array of 2 (2D) or 3 (3D) numbers, found "
+            "an array of 1 elements");
 }
 
 TEST(CaseReader, SetOverridesAKey) {

@@ -41,14 +41,30 @@ void check_kernel(const Kernel& kernel) {
   }
 }
 
-TEST(Kernels, LinearPartitionOfUnity2D) { check_kernel<2>(shape::Linear{}); }
-TEST(Kernels, LinearPartitionOfUnity3D) { check_kernel<3>(shape::Linear{}); }
-TEST(Kernels, UGimpPartitionOfUnity2D) { check_kernel<2>(shape::UGimp{0.25}); }
-TEST(Kernels, UGimpPartitionOfUnity3D) { check_kernel<3>(shape::UGimp{1.0 / 6.0}); }
-TEST(Kernels, QuadraticBSplinePartitionOfUnity2D) { check_kernel<2>(shape::QuadraticBSpline{}); }
-TEST(Kernels, QuadraticBSplinePartitionOfUnity3D) { check_kernel<3>(shape::QuadraticBSpline{}); }
-TEST(Kernels, CubicBSplinePartitionOfUnity2D) { check_kernel<2>(shape::CubicBSpline{}); }
-TEST(Kernels, CubicBSplinePartitionOfUnity3D) { check_kernel<3>(shape::CubicBSpline{}); }
+TEST(Kernels, LinearPartitionOfUnity2D) {
+  check_kernel<2>(shape::Linear{});
+}
+TEST(Kernels, LinearPartitionOfUnity3D) {
+  check_kernel<3>(shape::Linear{});
+}
+TEST(Kernels, UGimpPartitionOfUnity2D) {
+  check_kernel<2>(shape::UGimp{0.25});
+}
+TEST(Kernels, UGimpPartitionOfUnity3D) {
+  check_kernel<3>(shape::UGimp{1.0 / 6.0});
+}
+TEST(Kernels, QuadraticBSplinePartitionOfUnity2D) {
+  check_kernel<2>(shape::QuadraticBSpline{});
+}
+TEST(Kernels, QuadraticBSplinePartitionOfUnity3D) {
+  check_kernel<3>(shape::QuadraticBSpline{});
+}
+TEST(Kernels, CubicBSplinePartitionOfUnity2D) {
+  check_kernel<2>(shape::CubicBSpline{});
+}
+TEST(Kernels, CubicBSplinePartitionOfUnity3D) {
+  check_kernel<3>(shape::CubicBSpline{});
+}
 
 // The derivative each kernel returns is the derivative of its weight (central differences).
 template <class Kernel>
@@ -60,7 +76,8 @@ void check_derivative(const Kernel& kernel) {
     const int base = kernel.fill(xi, w, dw);
     ASSERT_EQ(kernel.fill(xi + eps, wp, dwp), base);
     ASSERT_EQ(kernel.fill(xi - eps, wm, dwm), base);
-    for (int a = 0; a < W; ++a) EXPECT_NEAR(dw[a], (wp[a] - wm[a]) / (2 * eps), 1e-7) << Kernel::name;
+    for (int a = 0; a < W; ++a)
+      EXPECT_NEAR(dw[a], (wp[a] - wm[a]) / (2 * eps), 1e-7) << Kernel::name;
   }
 }
 

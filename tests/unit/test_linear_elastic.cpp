@@ -51,8 +51,8 @@ TEST(LinearElastic, UniaxialStressPlaneStress) {
   step(m, p, L, dt);
   EXPECT_NEAR(p.stress[0][0], E * a * dt, 1e-9 * E * a);
   EXPECT_NEAR(p.stress[0][1], 0.0, 1e-9 * E * a);
-  EXPECT_EQ(p.stress[0][2], 0.0);                       // σ_zz = 0 in plane stress
-  EXPECT_NEAR(p.strain[0][2], -nu * a * dt, 1e-15);     // thickness strain of uniaxial stress
+  EXPECT_EQ(p.stress[0][2], 0.0);                    // σ_zz = 0 in plane stress
+  EXPECT_NEAR(p.strain[0][2], -nu * a * dt, 1e-15);  // thickness strain of uniaxial stress
 }
 
 TEST(LinearElastic, UniaxialStrainPlaneStrain) {
@@ -115,11 +115,16 @@ void check_spin_rotates_stress(Kinematics k) {
   EXPECT_NEAR(s.trace(), 100.0, 0.05);
 }
 
-TEST(LinearElastic, SpinRotatesStress2D) { check_spin_rotates_stress<2>(Kinematics::plane_strain); }
-TEST(LinearElastic, SpinRotatesStress3D) { check_spin_rotates_stress<3>(Kinematics::solid); }
+TEST(LinearElastic, SpinRotatesStress2D) {
+  check_spin_rotates_stress<2>(Kinematics::plane_strain);
+}
+TEST(LinearElastic, SpinRotatesStress3D) {
+  check_spin_rotates_stress<3>(Kinematics::solid);
+}
 
 TEST(LinearElastic, StoredEnergyIsHalfStressStrain) {
-  for (Kinematics k : {Kinematics::plane_strain, Kinematics::plane_stress, Kinematics::axisymmetric}) {
+  for (Kinematics k :
+       {Kinematics::plane_strain, Kinematics::plane_stress, Kinematics::axisymmetric}) {
     const LinearElastic<2> m(k, 1.0, E, nu);
     Sym<2> strain;
     strain << 1e-3, -4e-4, k == Kinematics::axisymmetric ? 2e-4 : 0.0, 3e-4;

@@ -26,12 +26,12 @@ TEST(Regions, PrimitiveShapes2D) {
 
 TEST(Regions, NonConvexPolygon) {
   // An L shape: the notch [1,2]×[1,2] is outside.
-  const auto l_shape = make_polygon({Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(1, 1), Vec2(1, 2),
-                                     Vec2(0, 2)});
+  const auto l_shape =
+      make_polygon({Vec2(0, 0), Vec2(2, 0), Vec2(2, 1), Vec2(1, 1), Vec2(1, 2), Vec2(0, 2)});
   EXPECT_TRUE(l_shape->contains(Vec2(0.5, 1.5)));
   EXPECT_TRUE(l_shape->contains(Vec2(1.5, 0.5)));
   EXPECT_FALSE(l_shape->contains(Vec2(1.5, 1.5)));
-  EXPECT_TRUE(l_shape->contains(Vec2(2.0, 0.5)));           // boundary counts as inside
+  EXPECT_TRUE(l_shape->contains(Vec2(2.0, 0.5)));  // boundary counts as inside
 }
 
 TEST(Regions, BooleanCombinations3D) {

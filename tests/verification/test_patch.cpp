@@ -53,8 +53,12 @@ void check_uniaxial_equilibrium(const std::string& kernel) {
   EXPECT_LT(max_stress_error, 1e-10 * s0) << kernel;
 }
 
-TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumLinear) { check_uniaxial_equilibrium("linear"); }
-TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumGimp) { check_uniaxial_equilibrium("ugimp"); }
+TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumLinear) {
+  check_uniaxial_equilibrium("linear");
+}
+TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumGimp) {
+  check_uniaxial_equilibrium("ugimp");
+}
 
 void check_uniform_stretching(const std::string& kernel, int margin_cells) {
   const double a = 0.01;
@@ -75,7 +79,7 @@ void check_uniform_stretching(const std::string& kernel, int margin_cells) {
     EXPECT_NEAR(p.strain[i][0], a * dt, 1e-12 * a * dt) << kernel << " at " << x.transpose();
     EXPECT_NEAR(p.strain[i][1], 0.0, 1e-12 * a * dt);
     EXPECT_NEAR(p.strain[i][3], 0.0, 1e-12 * a * dt);
-    EXPECT_NEAR(p.stress[i][0], c * a * dt, 1e-10 * c * a * dt);       // plane stress
+    EXPECT_NEAR(p.stress[i][0], c * a * dt, 1e-10 * c * a * dt);  // plane stress
     EXPECT_NEAR(p.stress[i][1], nu * c * a * dt, 1e-10 * c * a * dt);
   }
   EXPECT_GT(checked, 0);

@@ -44,7 +44,8 @@ void check_no_stress_inside(const std::string& kernel, const std::string& update
       kDisk, {"solver.kernel=" + kernel, "solver.velocity_update=" + update});
   s->step();
   const auto& p = s->points();
-  const double scale = 1000.0 * 2.0 * s->last_dt();  // E ω Δt: stress a spin would make if read as strain
+  const double scale =
+      1000.0 * 2.0 * s->last_dt();  // E ω Δt: stress a spin would make if read as strain
   int checked = 0;
   for (long i = 0; i < p.size(); ++i) {
     if ((p.position[i] - Vec2(0.5, 0.5)).norm() > 0.4 - margin * s->grid().cell()) continue;

@@ -24,10 +24,18 @@ void expect_all_checks_pass(const std::string& name) {
   }
 }
 
-TEST(Validation, BarVibration) { expect_all_checks_pass("bar-vibration"); }
-TEST(Validation, CylinderRadialVibration) { expect_all_checks_pass("cylinder-radial"); }
-TEST(Validation, TwoDisks) { expect_all_checks_pass("two-disks"); }
-TEST(Validation, TwoBarsStick) { expect_all_checks_pass("two-bars-stick"); }
+TEST(Validation, BarVibration) {
+  expect_all_checks_pass("bar-vibration");
+}
+TEST(Validation, CylinderRadialVibration) {
+  expect_all_checks_pass("cylinder-radial");
+}
+TEST(Validation, TwoDisks) {
+  expect_all_checks_pass("two-disks");
+}
+TEST(Validation, TwoBarsStick) {
+  expect_all_checks_pass("two-bars-stick");
+}
 
 TEST(Validation, EveryProblemHasAName) {
   for (const auto& p : problems()) {

@@ -40,9 +40,10 @@ int command_bench(const BenchOptions& o) {
       results.push_back(bench_two_disks(o.points, o.steps, t));
       const auto& r = results.back();
       if (!o.json)
-        std::printf("two-disks  linear MUSL FLIP  threads %d  points %ld  steps %ld  %.3f s  "
-                    "%.3g particle-steps/s\n",
-                    r.threads, r.points, r.steps, r.seconds, r.points * r.steps / r.seconds);
+        std::printf(
+            "two-disks  linear MUSL FLIP  threads %d  points %ld  steps %ld  %.3f s  "
+            "%.3g particle-steps/s\n",
+            r.threads, r.points, r.steps, r.seconds, r.points * r.steps / r.seconds);
     }
   } catch (const InputError& e) {
     return report_input_error(e);
@@ -54,10 +55,11 @@ int command_bench(const BenchOptions& o) {
     std::printf("[\n");
     for (std::size_t i = 0; i < results.size(); ++i) {
       const auto& r = results[i];
-      std::printf("  {\"case\": \"two-disks\", \"threads\": %d, \"points\": %ld, \"steps\": %ld, "
-                  "\"seconds\": %.6g, \"particle_steps_per_second\": %.6g}%s\n",
-                  r.threads, r.points, r.steps, r.seconds, r.points * r.steps / r.seconds,
-                  i + 1 < results.size() ? "," : "");
+      std::printf(
+          "  {\"case\": \"two-disks\", \"threads\": %d, \"points\": %ld, \"steps\": %ld, "
+          "\"seconds\": %.6g, \"particle_steps_per_second\": %.6g}%s\n",
+          r.threads, r.points, r.steps, r.seconds, r.points * r.steps / r.seconds,
+          i + 1 < results.size() ? "," : "");
     }
     std::printf("]\n");
   } else if (results.size() >= 2) {

@@ -10,8 +10,11 @@
 int main(int argc, char** argv) {
   using namespace pellicle;
   set_log_sink([](LogLevel level, std::string_view message) {
-    const char* tag = level == LogLevel::warning ? "warning: " : level == LogLevel::error ? "error: " : "";
-    std::fprintf(stderr, "pellicle: %s%.*s\n", tag, static_cast<int>(message.size()), message.data());
+    const char* tag = level == LogLevel::warning ? "warning: "
+                      : level == LogLevel::error ? "error: "
+                                                 : "";
+    std::fprintf(stderr, "pellicle: %s%.*s\n", tag, static_cast<int>(message.size()),
+                 message.data());
   });
 
   CLI::App app{"Pellicle: MPM for membranes, gases and solids"};
@@ -29,12 +32,14 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
 
   RunOptions check;
-  auto* check_cmd = app.add_subcommand("check", "Validate a case and print its summary without running");
+  auto* check_cmd =
+      app.add_subcommand("check", "Validate a case and print its summary without running");
   check_cmd->add_option("case", check.case_path, "Case file (TOML)")->required();
   check_cmd->add_option("--set", check.overrides, "Override a case key")->allow_extra_args(false);
 
   BenchOptions bench;
-  auto* bench_cmd = app.add_subcommand("bench", "Throughput of the two-disk problem, 1 and 2 threads");
+  auto* bench_cmd =
+      app.add_subcommand("bench", "Throughput of the two-disk problem, 1 and 2 threads");
   bench_cmd->add_flag("--json", bench.json, "Print a JSON list instead of text");
   bench_cmd->add_option("--points", bench.points, "Approximate number of points")
       ->check(CLI::Range(1000L, 100000000L));
@@ -44,8 +49,10 @@ int main(int argc, char** argv) {
   ValidateOptions validate;
   auto* validate_cmd = app.add_subcommand(
       "validate", "Run the validation problems against their references; write a report and plots");
-  validate_cmd->add_flag("--full", validate.full, "Full resolution (writes docs/validation by default)");
-  validate_cmd->add_option("--only", validate.only, "Run only these problems")->allow_extra_args(false);
+  validate_cmd->add_flag("--full", validate.full,
+                         "Full resolution (writes docs/validation by default)");
+  validate_cmd->add_option("--only", validate.only, "Run only these problems")
+      ->allow_extra_args(false);
   validate_cmd->add_option("--out", validate.out_dir, "Output directory");
 
   try {

@@ -19,10 +19,14 @@ namespace {
 
 const char* kinematics_name(Kinematics k) {
   switch (k) {
-    case Kinematics::plane_strain: return "2D plane strain";
-    case Kinematics::plane_stress: return "2D plane stress";
-    case Kinematics::axisymmetric: return "2D axisymmetric (x = r, y = z)";
-    case Kinematics::solid: return "3D";
+    case Kinematics::plane_strain:
+      return "2D plane strain";
+    case Kinematics::plane_stress:
+      return "2D plane stress";
+    case Kinematics::axisymmetric:
+      return "2D axisymmetric (x = r, y = z)";
+    case Kinematics::solid:
+      return "3D";
   }
   return "";
 }
@@ -72,9 +76,8 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   OutputWriter<D> output(c.output, *simulation);
   TerminalProgress progress(isatty(STDERR_FILENO));
   try {
-    const RunStatistics r =
-        run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress,
-                          hash_text(case_text(source)));
+    const RunStatistics r = run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress,
+                                              hash_text(case_text(source)));
     if (!o.quiet)
       std::fprintf(stderr, "done      %ld steps in %.2f s, %.3g particle-steps/s\n",
                    simulation->step_count(), r.wall_seconds, r.particle_steps_per_second);
@@ -111,7 +114,11 @@ int report_input_error(const std::exception& error) {
   return kExitBadInput;
 }
 
-int command_run(const RunOptions& options) { return run_or_check(options, false); }
-int command_check(const RunOptions& options) { return run_or_check(options, true); }
+int command_run(const RunOptions& options) {
+  return run_or_check(options, false);
+}
+int command_check(const RunOptions& options) {
+  return run_or_check(options, true);
+}
 
 }  // namespace pellicle

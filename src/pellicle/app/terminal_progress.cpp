@@ -12,8 +12,10 @@ void format_duration(char* out, std::size_t n, double seconds) {
     return;
   }
   const long s = std::lround(seconds);
-  if (s >= 3600) std::snprintf(out, n, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-  else std::snprintf(out, n, "%02ld:%02ld", s / 60, s % 60);
+  if (s >= 3600)
+    std::snprintf(out, n, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  else
+    std::snprintf(out, n, "%02ld:%02ld", s / 60, s % 60);
 }
 }  // namespace
 
@@ -51,8 +53,8 @@ void TerminalProgress::finish(const ProgressReport& r) {
     draw(r);
     std::fputc('\n', stderr);
   } else {
-    std::fprintf(stderr, "progress: %3.0f%%  t=%.6g  step %ld  elapsed %.1f s\n", 100.0 * r.fraction,
-                 r.time, r.step, r.wall_seconds);
+    std::fprintf(stderr, "progress: %3.0f%%  t=%.6g  step %ld  elapsed %.1f s\n",
+                 100.0 * r.fraction, r.time, r.step, r.wall_seconds);
   }
 }
 

@@ -60,12 +60,14 @@ int command_validate(const ValidateOptions& o) {
   if (selected.empty())
     for (const auto& p : validation::problems()) selected.push_back(&p);
 
-  const fs::path dir = o.out_dir.empty() ? fs::path(o.full ? "docs/validation" : "results/validation")
-                                         : fs::path(o.out_dir);
+  const fs::path dir = o.out_dir.empty()
+                           ? fs::path(o.full ? "docs/validation" : "results/validation")
+                           : fs::path(o.out_dir);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) {
-    std::fprintf(stderr, "pellicle: error: cannot create %s: %s\n", dir.c_str(), ec.message().c_str());
+    std::fprintf(stderr, "pellicle: error: cannot create %s: %s\n", dir.c_str(),
+                 ec.message().c_str());
     return kExitBadInput;
   }
   const auto resolution = o.full ? validation::Resolution::full : validation::Resolution::fast;
@@ -106,11 +108,13 @@ int command_validate(const ValidateOptions& o) {
 
   const std::string plotter = std::string(PELLICLE_SOURCE_DIR) + "/tools/plot_validation.py";
   if (fs::exists(plotter) && fs::exists("/usr/bin/python3")) {
-    const std::string command = "/usr/bin/python3 '" + plotter + "' '" + dir.string() + "' > /dev/null";
+    const std::string command =
+        "/usr/bin/python3 '" + plotter + "' '" + dir.string() + "' > /dev/null";
     if (std::system(command.c_str()) != 0)
       std::fprintf(stderr, "pellicle: warning: plotting failed (%s)\n", command.c_str());
   } else {
-    std::fprintf(stderr, "pellicle: note: %s or /usr/bin/python3 not found; no plots\n", plotter.c_str());
+    std::fprintf(stderr, "pellicle: note: %s or /usr/bin/python3 not found; no plots\n",
+                 plotter.c_str());
   }
   std::printf("%s: %d check(s) failed; report in %s\n", failed ? "FAILED" : "passed", failed,
               (dir / "report.md").c_str());

@@ -38,7 +38,8 @@ InputError::InputError(std::vector<InputProblem> problems)
     : std::runtime_error(join(problems)), problems_(std::move(problems)) {}
 
 InputError::InputError(SourceLocation where, std::string key, std::string message)
-    : InputError(std::vector<InputProblem>{{std::move(where), std::move(key), std::move(message)}}) {}
+    : InputError(
+          std::vector<InputProblem>{{std::move(where), std::move(key), std::move(message)}}) {}
 
 NumericalError::NumericalError(Context context, const std::string& what)
     : std::runtime_error(describe(context, what)), context_(std::move(context)) {}

@@ -17,7 +17,11 @@ void set_log_sink(LogSink sink);
 void set_log_level(LogLevel level);
 
 void log(LogLevel level, std::string_view message);
-inline void log_info(std::string_view m) { log(LogLevel::info, m); }
-inline void log_warning(std::string_view m) { log(LogLevel::warning, m); }
+inline void log_info(std::string_view m) {
+  log(LogLevel::info, m);
+}
+inline void log_warning(std::string_view m) {
+  log(LogLevel::warning, m);
+}
 
 }  // namespace pellicle

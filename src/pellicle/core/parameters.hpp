@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "pellicle/core/types.hpp"
+
 namespace pellicle {
 
 //! Admissible range of a number; bounds are inclusive unless marked open.
@@ -61,5 +63,20 @@ class ParameterReader {
   //! Record a problem about `key` that the getters cannot express (a cross-key rule).
   virtual void fail(std::string_view key, std::string message) = 0;
 };
+
+//! A required vector of D numbers.
+template <int D>
+Vec<D> read_vector(ParameterReader& in, std::string_view key, NumberRange range = NumberRange::any()) {
+  const std::vector<double> v = in.numbers(key, D, range);
+  Vec<D> x;
+  for (int d = 0; d < D; ++d) x[d] = v[d];
+  return x;
+}
+
+//! An optional vector of D numbers.
+template <int D>
+Vec<D> read_vector_or(ParameterReader& in, std::string_view key, const Vec<D>& fallback) {
+  return in.has(key) ? read_vector<D>(in, key) : fallback;
+}
 
 }  // namespace pellicle

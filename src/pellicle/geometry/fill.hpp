@@ -14,7 +14,7 @@ namespace pellicle {
 //! Sub-cell centres inside `region` within the grid box [lower, upper] of cell size h, in
 //! cell-major order (cells row by row, then the sub-cells of each cell).
 template <int D>
-std::vector<Vec<D>> fill_region(const Region<D>& region, const Vec<D>& lower,
-                                const Vec<D>& upper, double h, int points_per_direction);
+std::vector<Vec<D>> fill_region(const Region<D>& region, const Vec<D>& lower, const Vec<D>& upper,
+                                double h, int points_per_direction);
 
 }  // namespace pellicle

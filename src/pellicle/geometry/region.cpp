@@ -160,13 +160,13 @@ RegionPtr<D> make_difference(std::vector<RegionPtr<D>> parts) {
   return std::make_unique<Boolean<D>>(Combine::first_but_not_others, std::move(parts));
 }
 
-#define PELLICLE_REGION_INSTANTIATE(D)                                                 \
-  template RegionPtr<D> make_box<D>(const Vec<D>&, const Vec<D>&);                     \
-  template RegionPtr<D> make_ball<D>(const Vec<D>&, double);                           \
-  template RegionPtr<D> make_ellipsoid<D>(const Vec<D>&, const Vec<D>&);               \
-  template RegionPtr<D> make_half_space<D>(const Vec<D>&, const Vec<D>&);              \
-  template RegionPtr<D> make_union<D>(std::vector<RegionPtr<D>>);                      \
-  template RegionPtr<D> make_intersection<D>(std::vector<RegionPtr<D>>);               \
+#define PELLICLE_REGION_INSTANTIATE(D)                                    \
+  template RegionPtr<D> make_box<D>(const Vec<D>&, const Vec<D>&);        \
+  template RegionPtr<D> make_ball<D>(const Vec<D>&, double);              \
+  template RegionPtr<D> make_ellipsoid<D>(const Vec<D>&, const Vec<D>&);  \
+  template RegionPtr<D> make_half_space<D>(const Vec<D>&, const Vec<D>&); \
+  template RegionPtr<D> make_union<D>(std::vector<RegionPtr<D>>);         \
+  template RegionPtr<D> make_intersection<D>(std::vector<RegionPtr<D>>);  \
   template RegionPtr<D> make_difference<D>(std::vector<RegionPtr<D>>);
 PELLICLE_REGION_INSTANTIATE(2)
 PELLICLE_REGION_INSTANTIATE(3)

@@ -4,32 +4,24 @@ namespace pellicle {
 namespace {
 
 template <int D>
-Vec<D> vec(ParameterReader& in, std::string_view key, NumberRange range = NumberRange::any()) {
-  const std::vector<double> v = in.numbers(key, D, range);
-  Vec<D> x;
-  for (int d = 0; d < D; ++d) x[d] = v[d];
-  return x;
-}
-
-template <int D>
 RegionPtr<D> read_box(ParameterReader& in) {
-  const Vec<D> lo = vec<D>(in, "lower"), hi = vec<D>(in, "upper");
+  const Vec<D> lo = read_vector<D>(in, "lower"), hi = read_vector<D>(in, "upper");
   if ((hi.array() <= lo.array()).any()) in.fail("upper", "expected every component above lower");
   return make_box<D>(lo, hi);
 }
 template <int D>
 RegionPtr<D> read_ball(ParameterReader& in) {
-  const Vec<D> c = vec<D>(in, "center");
+  const Vec<D> c = read_vector<D>(in, "center");
   return make_ball<D>(c, in.number("radius", NumberRange::positive()));
 }
 template <int D>
 RegionPtr<D> read_ellipsoid(ParameterReader& in) {
-  const Vec<D> c = vec<D>(in, "center");
-  return make_ellipsoid<D>(c, vec<D>(in, "semi_axes", NumberRange::positive()));
+  const Vec<D> c = read_vector<D>(in, "center");
+  return make_ellipsoid<D>(c, read_vector<D>(in, "semi_axes", NumberRange::positive()));
 }
 template <int D>
 RegionPtr<D> read_half_space(ParameterReader& in) {
-  const Vec<D> p = vec<D>(in, "point"), n = vec<D>(in, "normal");
+  const Vec<D> p = read_vector<D>(in, "point"), n = read_vector<D>(in, "normal");
   if (n.norm() == 0.0) in.fail("normal", "expected a non-zero vector");
   return make_half_space<D>(p, n);
 }

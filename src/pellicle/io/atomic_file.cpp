@@ -20,7 +20,8 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
-  if (ec) throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+  if (ec)
+    throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
 }
 
 }  // namespace pellicle

@@ -16,10 +16,10 @@ std::unique_ptr<Simulation<2>> make_bench_two_disks(long points, const std::stri
   const long cells = std::max(4L, std::lround(std::sqrt(points / (4.0 * area))));
   char cell[64];
   std::snprintf(cell, sizeof cell, "grid.cell=%.17g", 1.0 / cells);
-  const auto source = load_case_source(
-      "", {cell, "solver.kernel=" + kernel, "solver.scheme=musl",
-           "solver.velocity_update=" + velocity_update, "solver.end_time=1000",
-           "body[0].points_per_cell=2", "body[1].points_per_cell=2"});
+  const auto source =
+      load_case_source("", {cell, "solver.kernel=" + kernel, "solver.scheme=musl",
+                            "solver.velocity_update=" + velocity_update, "solver.end_time=1000",
+                            "body[0].points_per_cell=2", "body[1].points_per_cell=2"});
   Case<2> c = read_case<2>(*source);
   return build_simulation<2>(c);
 }

@@ -22,8 +22,7 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   std::vector<InputProblem> problems;
   for (const auto& b : c.bodies) {
     const Material<D>& material = *c.materials[b.material];
-    const auto positions =
-        fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell);
+    const auto positions = fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell);
     if (positions.empty()) {
       problems.push_back({b.where, "body.region",
                           "body '" + b.name + "': the region holds no point inside the grid"});

@@ -33,7 +33,7 @@ struct BodySpec {
   //! Initial velocity field v = velocity + ω × (x − c) + G (x − c); 2D uses ω's z only.
   Vec3 angular_velocity = Vec3::Zero();
   Mat<D> velocity_gradient = Mat<D>::Zero();
-  std::optional<Vec<D>> center;  //!< c; default: the body's centre of mass
+  std::optional<Vec<D>> center;            //!< c; default: the body's centre of mass
   Vec<D> external_force = Vec<D>::Zero();  //!< total, spread over the body by mass
   std::optional<Sym<D>> initial_stress, initial_strain;
   RegionPtr<D> region;

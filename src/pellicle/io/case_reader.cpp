@@ -87,8 +87,8 @@ void apply_override(toml::table& root, const std::string& setting) {
     if (parts[i].index >= 0) {
       toml::array* array = next->as_array();
       if (!array || parts[i].index >= static_cast<long>(array->size()))
-        throw InputError(where, path, "no element " + std::to_string(parts[i].index) + " in " +
-                                          parts[i].key);
+        throw InputError(where, path,
+                         "no element " + std::to_string(parts[i].index) + " in " + parts[i].key);
       next = array->get(parts[i].index);
     }
     table = next->as_table();
@@ -138,24 +138,11 @@ int case_dimension(const CaseSource& source) {
   return static_cast<int>(array->size());
 }
 
-const std::string& case_text(const CaseSource& source) { return source.text; }
+const std::string& case_text(const CaseSource& source) {
+  return source.text;
+}
 
 namespace {
-
-//! A required vector of D numbers.
-template <int D>
-Vec<D> vec(ParameterReader& in, std::string_view key) {
-  const auto v = in.numbers(key, D);
-  Vec<D> x;
-  for (int d = 0; d < D; ++d) x[d] = v[d];
-  return x;
-}
-
-//! An optional vector of D numbers.
-template <int D>
-Vec<D> vec_or(ParameterReader& in, std::string_view key, const Vec<D>& fallback) {
-  return in.has(key) ? vec<D>(in, key) : fallback;
-}
 
 template <int D>
 Sym<D> read_tensor(ParameterReader& in) {
@@ -172,8 +159,8 @@ const char* face_names[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"
 template <int D>
 void read_grid(TomlParameters& root, Case<D>& c) {
   auto grid = root.sub_table("grid", true);
-  c.lower = vec<D>(*grid, "lower");
-  c.upper = vec<D>(*grid, "upper");
+  c.lower = read_vector<D>(*grid, "lower");
+  c.upper = read_vector<D>(*grid, "upper");
   c.cell = grid->number("cell", NumberRange::positive());
   for (int d = 0; d < D; ++d) {
     const double span = c.upper[d] - c.lower[d];
@@ -192,8 +179,8 @@ void read_grid(TomlParameters& root, Case<D>& c) {
   }
 
   if constexpr (D == 2) {
-    const std::string k = grid->choice("kinematics", {"plane-strain", "plane-stress", "axisymmetric"},
-                                       "plane-strain");
+    const std::string k = grid->choice(
+        "kinematics", {"plane-strain", "plane-stress", "axisymmetric"}, "plane-strain");
     c.settings.kinematics = k == "plane-stress"   ? Kinematics::plane_stress
                             : k == "axisymmetric" ? Kinematics::axisymmetric
                                                   : Kinematics::plane_strain;
@@ -206,7 +193,7 @@ void read_grid(TomlParameters& root, Case<D>& c) {
   auto faces = grid->sub_table("boundary", false);
   for (int f = 0; f < 2 * D; ++f) {
     const std::string v = faces->choice(face_names[f], {"fixed", "slip", "free"}, "fixed");
-    c.faces[f] = v == "slip" ? FaceCondition::slip
+    c.faces[f] = v == "slip"   ? FaceCondition::slip
                  : v == "free" ? FaceCondition::free
                                : FaceCondition::fixed;
   }
@@ -249,7 +236,7 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   c.settings.fixed_dt = s->number_or("dt", 0.0, NumberRange::positive());
   c.settings.cfl_fraction = s->number_or("cfl", 0.5, NumberRange::open_closed(0.0, 1.0));
   if (c.settings.fixed_dt > 0.0) c.settings.cfl_fraction = 0.0;
-  c.gravity = vec_or<D>(*s, "gravity", Vec<D>::Zero());
+  c.gravity = read_vector_or<D>(*s, "gravity", Vec<D>::Zero());
 }
 
 template <int D>
@@ -296,26 +283,28 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
       t->fail("material", "expected the name of a [[material]], found \"" + material + "\"");
     b.material = it == c.material_names.end() ? 0 : static_cast<int>(it - c.material_names.begin());
     b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
-    b.velocity = vec_or<D>(*t, "velocity", Vec<D>::Zero());
+    b.velocity = read_vector_or<D>(*t, "velocity", Vec<D>::Zero());
     if constexpr (D == 2) {
       b.angular_velocity.z() = t->number_or("angular_velocity", 0.0, NumberRange::any());
     } else {
-      b.angular_velocity = vec_or<3>(*t, "angular_velocity", Vec3::Zero());
+      b.angular_velocity = read_vector_or<3>(*t, "angular_velocity", Vec3::Zero());
     }
     if (t->has("velocity_gradient")) {
       const auto rows = t->number_lists("velocity_gradient", D);
       if (static_cast<int>(rows.size()) != D)
-        t->fail("velocity_gradient", "expected " + std::to_string(D) + " rows of " +
-                                         std::to_string(D) + " numbers");
+        t->fail("velocity_gradient",
+                "expected " + std::to_string(D) + " rows of " + std::to_string(D) + " numbers");
       for (int i = 0; i < std::min<int>(D, rows.size()); ++i)
         for (int j = 0; j < D; ++j) b.velocity_gradient(i, j) = rows[i][j];
     }
-    if (t->has("center")) b.center = vec<D>(*t, "center");
-    b.external_force = vec_or<D>(*t, "external_force", Vec<D>::Zero());
+    if (t->has("center")) b.center = read_vector<D>(*t, "center");
+    b.external_force = read_vector_or<D>(*t, "external_force", Vec<D>::Zero());
     if (t->has("initial_stress") && t->has("initial_strain"))
       t->fail("initial_strain", "give either initial_stress or initial_strain, not both");
-    if (t->has("initial_stress")) b.initial_stress = read_tensor<D>(*t->sub_table("initial_stress", true));
-    if (t->has("initial_strain")) b.initial_strain = read_tensor<D>(*t->sub_table("initial_strain", true));
+    if (t->has("initial_stress"))
+      b.initial_stress = read_tensor<D>(*t->sub_table("initial_stress", true));
+    if (t->has("initial_strain"))
+      b.initial_strain = read_tensor<D>(*t->sub_table("initial_strain", true));
     b.region = make_region<D>(*t->sub_table("region", true));
     c.bodies.push_back(std::move(b));
   }
@@ -331,8 +320,9 @@ Case<D> read_case(const CaseSource& source) {
   {
     TomlParameters root(source.root, "", problems);
     auto meta = root.sub_table("case", false);
-    const std::string stem =
-        source.file == "<default case>" ? "default" : std::filesystem::path(source.file).stem().string();
+    const std::string stem = source.file == "<default case>"
+                                 ? "default"
+                                 : std::filesystem::path(source.file).stem().string();
     c.name = meta->text_or("name", stem);
     c.title = meta->text_or("title", c.name);
     c.source = meta->text_or("source", "");

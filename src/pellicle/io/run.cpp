@@ -50,7 +50,8 @@ RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
   const long first_step = simulation.step_count();
   auto statistics = [&] {
     RunStatistics r;
-    r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double point_steps =
         static_cast<double>(simulation.points().size()) * (simulation.step_count() - first_step);
     r.particle_steps_per_second = r.wall_seconds > 0.0 ? point_steps / r.wall_seconds : 0.0;

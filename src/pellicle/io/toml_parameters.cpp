@@ -41,13 +41,27 @@ void ProblemList::throw_if_any() const {
 std::string describe_node(const toml::node& node) {
   std::ostringstream out;
   switch (node.type()) {
-    case toml::node_type::string: out << "the string \"" << *node.value<std::string>() << '"'; break;
-    case toml::node_type::integer: out << "the integer " << *node.value<int64_t>(); break;
-    case toml::node_type::floating_point: out << "the number " << *node.value<double>(); break;
-    case toml::node_type::boolean: out << (*node.value<bool>() ? "true" : "false"); break;
-    case toml::node_type::array: out << "an array of " << node.as_array()->size() << " elements"; break;
-    case toml::node_type::table: out << "a table"; break;
-    default: out << "a date or time"; break;
+    case toml::node_type::string:
+      out << "the string \"" << *node.value<std::string>() << '"';
+      break;
+    case toml::node_type::integer:
+      out << "the integer " << *node.value<int64_t>();
+      break;
+    case toml::node_type::floating_point:
+      out << "the number " << *node.value<double>();
+      break;
+    case toml::node_type::boolean:
+      out << (*node.value<bool>() ? "true" : "false");
+      break;
+    case toml::node_type::array:
+      out << "an array of " << node.as_array()->size() << " elements";
+      break;
+    case toml::node_type::table:
+      out << "a table";
+      break;
+    default:
+      out << "a date or time";
+      break;
   }
   return out.str();
 }
@@ -86,9 +100,13 @@ const toml::node* TomlParameters::take(std::string_view key) {
   return table_.get(key);
 }
 
-SourceLocation TomlParameters::location() const { return location_of(&table_, problems_.file); }
+SourceLocation TomlParameters::location() const {
+  return location_of(&table_, problems_.file);
+}
 
-bool TomlParameters::has(std::string_view key) const { return table_.contains(key); }
+bool TomlParameters::has(std::string_view key) const {
+  return table_.contains(key);
+}
 
 bool TomlParameters::read_number(const toml::node& node, std::string_view key, NumberRange range,
                                  double& out) {

@@ -12,8 +12,7 @@ namespace {
 
 //! RFC 4648 base64 of a byte block.
 void append_base64(std::string& out, const unsigned char* data, std::size_t n) {
-  static const char* alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  static const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::size_t i = 0;
   for (; i + 2 < n; i += 3) {
     const unsigned v = (data[i] << 16) | (data[i + 1] << 8) | data[i + 2];
@@ -90,8 +89,9 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
   std::string out;
   out.reserve(n * 200 + 4096);
   out += "<?xml version=\"1.0\"?>\n";
-  out += "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+  out +=
+      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
   out += "<FieldData>\n";
   data_array(out, "Float64", "TIME", 1, std::vector<double>{simulation.time()});
   out += "</FieldData>\n";

@@ -5,8 +5,7 @@
 namespace pellicle {
 
 template <int D>
-Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell,
-              const FaceConditions<D>& faces)
+Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces)
     : lower_(lower), upper_(upper), h_(cell), inv_h_(1.0 / cell), faces_(faces) {
   node_count_ = 1;
   for (int d = 0; d < D; ++d) {
@@ -33,9 +32,14 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell,
       for (int side = 0; side < 2; ++side) {
         if (!(side == 0 ? low : high)) continue;
         switch (faces_[2 * d + side]) {
-          case FaceCondition::free: break;
-          case FaceCondition::slip: mask |= 1u << d; break;
-          case FaceCondition::fixed: mask |= (1u << D) - 1u; break;
+          case FaceCondition::free:
+            break;
+          case FaceCondition::slip:
+            mask |= 1u << d;
+            break;
+          case FaceCondition::fixed:
+            mask |= (1u << D) - 1u;
+            break;
         }
       }
     }

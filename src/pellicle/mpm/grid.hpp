@@ -77,11 +77,11 @@ class Grid {
   }
 
   // Node fields.
-  std::vector<double> mass;               //!< lumped mass m_i = Σ_p m_p N_i(x_p) (IJNME eq 7)
-  std::vector<Vec<D>> momentum;           //!< p_i = Σ_p m_p v_p N_i(x_p) (eq 10)
-  std::vector<Vec<D>> force;              //!< internal plus external force (eq 16)
-  std::vector<Vec<D>> velocity;           //!< Lagrangian v_i^L, then the convected velocity
-  std::vector<Vec<D>> velocity_change;    //!< v_i^L − v_i^k over the step (FLIP increment)
+  std::vector<double> mass;             //!< lumped mass m_i = Σ_p m_p N_i(x_p) (IJNME eq 7)
+  std::vector<Vec<D>> momentum;         //!< p_i = Σ_p m_p v_p N_i(x_p) (eq 10)
+  std::vector<Vec<D>> force;            //!< internal plus external force (eq 16)
+  std::vector<Vec<D>> velocity;         //!< Lagrangian v_i^L, then the convected velocity
+  std::vector<Vec<D>> velocity_change;  //!< v_i^L − v_i^k over the step (FLIP increment)
 
  private:
   struct Constraint {

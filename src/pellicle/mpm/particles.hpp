@@ -13,9 +13,9 @@ namespace pellicle {
 template <int D>
 struct BodyInfo {
   std::string name;
-  int material = 0;                     //!< index into the simulation's materials
+  int material = 0;                              //!< index into the simulation's materials
   Vec<D> applied_acceleration = Vec<D>::Zero();  //!< external force / body mass
-  long begin = 0, end = 0;              //!< point range
+  long begin = 0, end = 0;                       //!< point range
   long count() const { return end - begin; }
 };
 

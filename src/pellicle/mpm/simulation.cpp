@@ -35,8 +35,8 @@ void Simulation<D>::step() {
          << "; reduce solver.dt or use solver.cfl";
     fail(-1, what.str());
   }
-  transfer_->compute_stencils(points_, grid_);                  // stencils
-  if (settings_.scheme == UpdateScheme::usf) {                  // to_grid (USF: stress first)
+  transfer_->compute_stencils(points_, grid_);  // stencils
+  if (settings_.scheme == UpdateScheme::usf) {  // to_grid (USF: stress first)
     transfer_->to_grid(points_, gravity_, grid_, false);
     grid_.velocities_from_momentum();
     update_materials(dt);
@@ -44,12 +44,12 @@ void Simulation<D>::step() {
   } else {
     transfer_->to_grid(points_, gravity_, grid_, true);
   }
-  grid_.integrate(dt);                                          // grid
-  PointFailure failure;                                         // to_points
+  grid_.integrate(dt);   // grid
+  PointFailure failure;  // to_points
   max_speed_ = transfer_->to_points(grid_, dt, points_, failure);
   if (failure.point >= 0) fail(failure.point, failure.what);
   if (settings_.scheme == UpdateScheme::musl) transfer_->remap(points_, grid_);  // remap
-  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);              // materials
+  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);               // materials
   time_ += dt;
   last_dt_ = dt;
   ++step_;

@@ -64,9 +64,7 @@ class Simulation {
   bool finished() const;
 
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
-  void remove_observer(StepObserver<D>* observer) {
-    std::erase(observers_, observer);
-  }
+  void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
 
   double time() const { return time_; }
   long step_count() const { return step_; }

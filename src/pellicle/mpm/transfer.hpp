@@ -59,8 +59,7 @@ class Transfer {
   virtual void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
                        bool forces) = 0;
   //! Scatter only the forces onto a grid whose mass and momentum are already mapped (USF).
-  virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity,
-                              Grid<D>& grid) = 0;
+  virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) = 0;
 
   //! Stage `to_points`: move points with the Lagrangian grid velocity and update their
   //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves
@@ -76,8 +75,7 @@ class Transfer {
   //! v_r/r, and the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ.
   //! Returns the first point whose density became non-positive or non-finite, or −1.
   virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
-                                std::vector<Mat<D>>& gradient,
-                                std::vector<double>& hoop_rate) = 0;
+                                std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) = 0;
 };
 
 //! A kernel known by name.

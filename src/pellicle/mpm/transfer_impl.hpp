@@ -34,7 +34,8 @@ class TransferImpl final : public Transfer<D> {
         double w[Kernel::width], dw[Kernel::width];
         const int first = kernel_.fill(xi[d], w, dw);
         double inertia = 0.0;  // D_dd / h²: tensor-product kernels give a diagonal D
-        for (int a = 0; a < Kernel::width; ++a) inertia += w[a] * (first + a - xi[d]) * (first + a - xi[d]);
+        for (int a = 0; a < Kernel::width; ++a)
+          inertia += w[a] * (first + a - xi[d]) * (first + a - xi[d]);
         e += inertia * points.affine[p].col(d).squaredNorm();
       }
       energy += 0.5 * points.mass[p] * h * h * e;
@@ -42,7 +43,9 @@ class TransferImpl final : public Transfer<D> {
     return energy;
   }
 
-  std::size_t stencil_bytes() const override { return sizeof(Stencil<D, Kernel>); }
+  std::size_t stencil_bytes() const override {
+    return sizeof(Stencil<D, Kernel>);
+  }
 
   void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
     const long n = points.size();
@@ -57,11 +60,15 @@ class TransferImpl final : public Transfer<D> {
     zero(grid.momentum);
     if (forces) zero(grid.force);
     if (apic()) {
-      if (forces) scatter<true, true, true>(points, gravity, grid);
-      else scatter<true, false, true>(points, gravity, grid);
+      if (forces)
+        scatter<true, true, true>(points, gravity, grid);
+      else
+        scatter<true, false, true>(points, gravity, grid);
     } else {
-      if (forces) scatter<true, true, false>(points, gravity, grid);
-      else scatter<true, false, false>(points, gravity, grid);
+      if (forces)
+        scatter<true, true, false>(points, gravity, grid);
+      else
+        scatter<true, false, false>(points, gravity, grid);
     }
   }
 
@@ -113,17 +120,20 @@ class TransferImpl final : public Transfer<D> {
     }
     if (first_bad != std::numeric_limits<long>::max()) {
       failure.point = first_bad;
-      failure.what = points.velocity[first_bad].allFinite() && points.position[first_bad].allFinite()
-                         ? "the point left the grid domain"
-                         : "non-finite position or velocity";
+      failure.what =
+          points.velocity[first_bad].allFinite() && points.position[first_bad].allFinite()
+              ? "the point left the grid domain"
+              : "non-finite position or velocity";
     }
     return max_speed;
   }
 
   void remap(const Particles<D>& points, Grid<D>& grid) override {
     zero(grid.momentum);
-    if (apic()) scatter<false, false, true, true>(points, Vec<D>::Zero(), grid);
-    else scatter<false, false, false, true>(points, Vec<D>::Zero(), grid);
+    if (apic())
+      scatter<false, false, true, true>(points, Vec<D>::Zero(), grid);
+    else
+      scatter<false, false, false, true>(points, Vec<D>::Zero(), grid);
     grid.velocities_from_momentum();
   }
 
@@ -160,15 +170,19 @@ class TransferImpl final : public Transfer<D> {
   }
 
  private:
-  bool apic() const { return options_.update == VelocityUpdate::apic; }
+  bool apic() const {
+    return options_.update == VelocityUpdate::apic;
+  }
 
   template <class T>
   static void zero(std::vector<T>& field) {
     const long n = static_cast<long>(field.size());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
-      if constexpr (std::is_same_v<T, double>) field[i] = 0.0;
-      else field[i].setZero();
+      if constexpr (std::is_same_v<T, double>)
+        field[i] = 0.0;
+      else
+        field[i].setZero();
     }
   }
 

@@ -29,8 +29,8 @@ double exact_right_half_velocity(double t) {
 template <int D>
 Check measure(const std::string& kernel, double cell, Series* series) {
   const char* file = D == 2 ? "elastic_bar_vibration.toml" : "elastic_bar_vibration_3d.toml";
-  auto s = builtin_simulation<D>(file, {"solver.kernel=" + kernel,
-                                        "grid.cell=" + std::to_string(cell)});
+  auto s =
+      builtin_simulation<D>(file, {"solver.kernel=" + kernel, "grid.cell=" + std::to_string(cell)});
   std::vector<double> t{0.0}, v{body_velocity(*s, 1).x()};
   while (!s->finished()) {
     s->step();
@@ -51,13 +51,14 @@ Check measure(const std::string& kernel, double cell, Series* series) {
 Outcome bar_vibration(Resolution resolution) {
   const bool full = resolution == Resolution::full;
   Outcome out;
-  Series series{"bar_velocity", "Right-half mean velocity, quadratic B-spline (2D)",
-                {"time", "simulated", "exact"}, {}};
+  Series series{"bar_velocity",
+                "Right-half mean velocity, quadratic B-spline (2D)",
+                {"time", "simulated", "exact"},
+                {}};
   for (const std::string kernel : {"linear", "ugimp", "quadratic-bspline", "cubic-bspline"}) {
     for (double cell : full ? std::vector<double>{0.05, 0.025, 0.0125} : std::vector<double>{0.05})
-      out.checks.push_back(measure<2>(kernel, cell,
-                                      kernel == "quadratic-bspline" && cell == 0.05 ? &series
-                                                                                    : nullptr));
+      out.checks.push_back(measure<2>(
+          kernel, cell, kernel == "quadratic-bspline" && cell == 0.05 ? &series : nullptr));
   }
   for (const std::string kernel : {"linear", "quadratic-bspline"})
     out.checks.push_back(measure<3>(kernel, full ? 0.025 : 0.05, nullptr));

@@ -61,8 +61,10 @@ Outcome cylinder_radial_vibration(Resolution resolution) {
     for (const auto& m : modes) v += m.weight * std::cos(m.omega * t);
     return v;
   };
-  Series series{"cylinder_velocity", "Mean radial velocity of the cylinder",
-                {"time", "simulated", "modal solution"}, {}};
+  Series series{"cylinder_velocity",
+                "Mean radial velocity of the cylinder",
+                {"time", "simulated", "modal solution"},
+                {}};
   std::vector<double> t{0.0}, v{body_velocity(*s, 0).x()}, v_exact{exact(0.0)};
   series.rows.push_back({0.0, v[0], v_exact[0]});
   while (!s->finished()) {
@@ -74,8 +76,8 @@ Outcome cylinder_radial_vibration(Resolution resolution) {
   }
   Outcome out;
   // The mean of v_r = a r over the disk r < R, weighted by r, is 2aR/3.
-  out.checks.push_back({"initial mean radial velocity / (2aR/3)", v[0] / (2 * a * R / 3), 1.0,
-                        0.99, 1.01, ""});
+  out.checks.push_back(
+      {"initial mean radial velocity / (2aR/3)", v[0] / (2 * a * R / 3), 1.0, 0.99, 1.01, ""});
   const auto simulated = sign_changes(t, v), expected = sign_changes(t, v_exact);
   double worst = 0.0;
   for (std::size_t i = 0; i < expected.size(); ++i) {

@@ -14,7 +14,7 @@ enum class Resolution { fast, full };
 struct Check {
   std::string quantity;  //!< what was measured, e.g. "period error, quadratic-bspline"
   double measured = 0.0;
-  double reference = 0.0;  //!< the analytic or published value
+  double reference = 0.0;           //!< the analytic or published value
   double lower = 0.0, upper = 0.0;  //!< passes when lower ≤ measured ≤ upper
   std::string unit;
   bool passed() const { return measured >= lower && measured <= upper; }
@@ -36,7 +36,7 @@ struct Outcome {
 };
 
 struct Problem {
-  std::string name;    //!< short id: "bar-vibration"
+  std::string name;  //!< short id: "bar-vibration"
   std::string title;
   std::string source;  //!< seed section
   Outcome (*run)(Resolution);

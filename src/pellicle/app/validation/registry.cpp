@@ -28,8 +28,8 @@ const Problem* find_problem(const std::string& name) {
 std::string Check::describe() const {
   char text[512];
   std::snprintf(text, sizeof text, "%s = %.6g%s%s (reference %.6g, accepted [%.6g, %.6g]) %s",
-                quantity.c_str(), measured, unit.empty() ? "" : " ", unit.c_str(), reference,
-                lower, upper, passed() ? "ok" : "FAILED");
+                quantity.c_str(), measured, unit.empty() ? "" : " ", unit.c_str(), reference, lower,
+                upper, passed() ? "ok" : "FAILED");
   return text;
 }
 

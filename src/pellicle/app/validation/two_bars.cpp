@@ -15,8 +15,10 @@ Outcome two_bars_stick(Resolution) {
   auto s = builtin_simulation<2>("two_bars_stick.toml", {});
   const auto& p = s->points();
   const double momentum0 = s->state().momentum.x();
-  Series series{"two_bars_velocity", "Centre-of-mass velocities (compare IJNME Fig. 18b)",
-                {"time", "left bar", "right bar"}, {{0.0, 2.0, 0.0}}};
+  Series series{"two_bars_velocity",
+                "Centre-of-mass velocities (compare IJNME Fig. 18b)",
+                {"time", "left bar", "right bar"},
+                {{0.0, 2.0, 0.0}}};
   double left_sum = 0.0, right_sum = 0.0, momentum_error = 0.0;
   int samples = 0;
   while (!s->finished()) {
@@ -37,8 +39,10 @@ Outcome two_bars_stick(Resolution) {
     right_edge = std::min(right_edge, p.position[i].x());
   const double h = s->grid().cell();
   Outcome out;
-  out.checks.push_back({"mean left-bar velocity, t ≥ 0.45", left_sum / samples, 1.0, 0.85, 1.15, ""});
-  out.checks.push_back({"mean right-bar velocity, t ≥ 0.45", right_sum / samples, 1.0, 0.85, 1.15, ""});
+  out.checks.push_back(
+      {"mean left-bar velocity, t ≥ 0.45", left_sum / samples, 1.0, 0.85, 1.15, ""});
+  out.checks.push_back(
+      {"mean right-bar velocity, t ≥ 0.45", right_sum / samples, 1.0, 0.85, 1.15, ""});
   // Contact in the paper's sense: facing points in the same or neighbouring cells, so both
   // bars contribute to a shared line of grid nodes.
   out.checks.push_back({"cells between the facing points at t = 0.501",

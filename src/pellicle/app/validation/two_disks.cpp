@@ -38,14 +38,17 @@ Collision collide(const std::vector<std::string>& overrides, Series* series) {
 Outcome two_disks(Resolution resolution) {
   Outcome out;
   const std::string cell = resolution == Resolution::full ? "0.003125" : "0.00625";
-  Series series{"two_disks_energy", "Two disks, APIC: energies / initial energy",
-                {"time", "kinetic", "strain", "total"}, {}};
+  Series series{"two_disks_energy",
+                "Two disks, APIC: energies / initial energy",
+                {"time", "kinetic", "strain", "total"},
+                {}};
   const Collision apic = collide({"grid.cell=" + cell}, &series);
   out.checks.push_back({"APIC, quadratic B-spline, h = " + cell + ": E(end)/E(0)",
                         apic.energy_after, 1.0, 0.98, 1.02, ""});
-  out.checks.push_back({"APIC: min E(t)/E(0) while the disks press together", apic.energy_min,
-                        1.0, 0.94, 1.02, ""});
-  out.checks.push_back({"APIC: largest |total momentum|", apic.momentum, 0.0, 0.0, 1e-10, "kg m/s"});
+  out.checks.push_back(
+      {"APIC: min E(t)/E(0) while the disks press together", apic.energy_min, 1.0, 0.94, 1.02, ""});
+  out.checks.push_back(
+      {"APIC: largest |total momentum|", apic.momentum, 0.0, 0.0, 1e-10, "kg m/s"});
   out.checks.push_back({"APIC: lower disk x-velocity after the rebound", apic.lower_velocity.x(),
                         -0.1, -0.11, -0.08, "m/s"});
   // The seeds' kernel with a 99% FLIP blend: the PIC share dissipates; a regression bound.

@@ -14,7 +14,8 @@ LinearElastic<D>::LinearElastic(Kinematics kinematics, double density, double yo
       density_(density),
       young_(youngs_modulus),
       poisson_(poisson_ratio),
-      lambda_(youngs_modulus * poisson_ratio / ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio))),
+      lambda_(youngs_modulus * poisson_ratio /
+              ((1.0 + poisson_ratio) * (1.0 - 2.0 * poisson_ratio))),
       shear_(youngs_modulus / (2.0 * (1.0 + poisson_ratio))) {}
 
 template <int D>

@@ -18,8 +18,7 @@ namespace pellicle {
 template <int D>
 class LinearElastic final : public Material<D> {
  public:
-  LinearElastic(Kinematics kinematics, double density, double youngs_modulus,
-                double poisson_ratio);
+  LinearElastic(Kinematics kinematics, double density, double youngs_modulus, double poisson_ratio);
 
   void update(const MaterialStep<D>& step) const override;
   double max_wave_speed(const Particles<D>& points, long begin, long end) const override;

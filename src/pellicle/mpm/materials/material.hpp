@@ -50,8 +50,8 @@ class Material {
 
 //! Builds one material from its parameter table.
 template <int D>
-using MaterialFactory =
-    std::unique_ptr<Material<D>> (*)(ParameterReader& parameters, Kinematics kinematics);
+using MaterialFactory = std::unique_ptr<Material<D>> (*)(ParameterReader& parameters,
+                                                         Kinematics kinematics);
 
 //! Known models by name (see registry.cpp: one line per model).
 template <int D>

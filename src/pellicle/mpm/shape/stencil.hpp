@@ -16,10 +16,10 @@ template <int D, class Kernel>
 struct Stencil {
   static constexpr int width = Kernel::width;
   static constexpr int size = D == 2 ? width * width : width * width * width;
-  long base;                //!< flat index of node (0, 0[, 0]) of the stencil
-  double offset[D];         //!< (x_node(0) − x_p)/h per axis, for APIC's x_i − x_p
-  double w[D][width];       //!< 1D weights φ
-  double dw[D][width];      //!< 1D derivatives dφ/dx (already divided by h)
+  long base;            //!< flat index of node (0, 0[, 0]) of the stencil
+  double offset[D];     //!< (x_node(0) − x_p)/h per axis, for APIC's x_i − x_p
+  double w[D][width];   //!< 1D weights φ
+  double dw[D][width];  //!< 1D derivatives dφ/dx (already divided by h)
 };
 
 //! Fill the stencil of a point at x.

@@ -5,7 +5,7 @@ namespace pellicle {
 
 template <int D>
 std::unique_ptr<Transfer<D>> make_linear_transfer(const TransferOptions& options,
-                                                   double /*points_per_cell*/) {
+                                                  double /*points_per_cell*/) {
   return std::make_unique<TransferImpl<D, shape::Linear>>(options, shape::Linear{});
 }
 

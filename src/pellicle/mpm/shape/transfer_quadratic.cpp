@@ -5,8 +5,9 @@ namespace pellicle {
 
 template <int D>
 std::unique_ptr<Transfer<D>> make_quadratic_transfer(const TransferOptions& options,
-                                                   double /*points_per_cell*/) {
-  return std::make_unique<TransferImpl<D, shape::QuadraticBSpline>>(options, shape::QuadraticBSpline{});
+                                                     double /*points_per_cell*/) {
+  return std::make_unique<TransferImpl<D, shape::QuadraticBSpline>>(options,
+                                                                    shape::QuadraticBSpline{});
 }
 
 template std::unique_ptr<Transfer<2>> make_quadratic_transfer<2>(const TransferOptions&, double);

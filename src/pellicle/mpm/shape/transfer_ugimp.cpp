@@ -5,8 +5,9 @@ namespace pellicle {
 
 template <int D>
 std::unique_ptr<Transfer<D>> make_ugimp_transfer(const TransferOptions& options,
-                                                   double points_per_cell) {
-  return std::make_unique<TransferImpl<D, shape::UGimp>>(options, shape::UGimp{0.5 / points_per_cell});
+                                                 double points_per_cell) {
+  return std::make_unique<TransferImpl<D, shape::UGimp>>(options,
+                                                         shape::UGimp{0.5 / points_per_cell});
 }
 
 template std::unique_ptr<Transfer<2>> make_ugimp_transfer<2>(const TransferOptions&, double);
