@@ -37,10 +37,13 @@ expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" run --o
 expect 2 "--set solver.cfl=2: solver.cfl: expected a number in (0, 1], found the integer 2" -- \
   "$pellicle" check "$cases/two_disks.toml" --set solver.cfl=2
 expect 2 "cannot open the case file" -- "$pellicle" run "$work/missing.toml"
+touch "$work/a-file"
+expect 2 "output.directory: cannot create" -- "$pellicle" run --quiet --out "$work/a-file/sub"
 expect 2 "not expected: --no-such-flag" -- "$pellicle" run --no-such-flag
 
 # Numerical failure: exit 3 with time, step, body, point; history and snapshots complete.
-expect 3 "CFL number" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"
+expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"
+grep -q "CFL number" "$work/err" || { echo "FAIL: CFL failure not named"; failures=$((failures + 1)); }
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/leave" "$here/leaves_grid.toml"
 grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
   { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }

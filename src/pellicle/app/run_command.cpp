@@ -73,7 +73,13 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     return kExitOk;
   }
   if (!o.quiet) print_summary(c, *simulation, stderr);
-  OutputWriter<D> output(c.output, *simulation);
+  std::unique_ptr<OutputWriter<D>> writer;
+  try {
+    writer = std::make_unique<OutputWriter<D>>(c.output, *simulation);
+  } catch (const std::runtime_error& e) {  // the output directory is part of the input
+    throw InputError(SourceLocation{c.file, 0, 0}, "output.directory", e.what());
+  }
+  OutputWriter<D>& output = *writer;
   TerminalProgress progress(isatty(STDERR_FILENO));
   try {
     const RunStatistics r = run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress,

@@ -27,13 +27,14 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
 
 template <int D>
 void Simulation<D>::step() {
-  const double dt = planned_dt();
-  cfl_number_ = dt * max_signal_speed() / grid_.cell();
+  const double signal = max_signal_speed();
+  const double dt = time_step(signal);
+  cfl_number_ = dt * signal / grid_.cell();
   if (cfl_number_ > 1.0) {
     std::ostringstream what;
     what << "CFL number " << cfl_number_ << " > 1 with dt = " << dt
-         << "; reduce solver.dt or use solver.cfl";
-    fail(-1, what.str());
+         << " (this point is the fastest signal); reduce solver.dt or use solver.cfl";
+    fail(fastest_point(), what.str());
   }
   transfer_->compute_stencils(points_, grid_);  // stencils
   if (settings_.scheme == UpdateScheme::usf) {  // to_grid (USF: stress first)
@@ -69,8 +70,27 @@ bool Simulation<D>::finished() const {
 
 template <int D>
 double Simulation<D>::planned_dt() const {
+  return time_step(max_signal_speed());
+}
+
+template <int D>
+long Simulation<D>::fastest_point() const {
+  long fastest = 0;
+  double top = -1.0;
+  for (const auto& body : points_.bodies) {
+    const double c = materials_[body.material]->max_wave_speed(points_, body.begin, body.end);
+    for (long p = body.begin; p < body.end; ++p) {
+      const double s = c + points_.velocity[p].norm();
+      if (s > top) top = s, fastest = p;
+    }
+  }
+  return fastest;
+}
+
+template <int D>
+double Simulation<D>::time_step(double signal_speed) const {
   double dt = settings_.fixed_dt;
-  if (dt <= 0.0) dt = settings_.cfl_fraction * grid_.cell() / max_signal_speed();
+  if (dt <= 0.0) dt = settings_.cfl_fraction * grid_.cell() / signal_speed;
   const double remaining = settings_.end_time - time_;
   // Land on the end time instead of overshooting it by a fraction of a step.
   if (remaining > 0.0 && remaining < dt * (1.0 + 1e-9)) dt = remaining;
@@ -114,7 +134,8 @@ SystemState<D> Simulation<D>::state() const {
   SystemState<D> s;
   const long n = points_.size();
   double kinetic = 0.0, gravitational = 0.0;
-  std::array<double, D> momentum{};
+  double momentum[3] = {0.0, 0.0, 0.0};
+#pragma omp parallel for schedule(static) reduction(+ : kinetic, gravitational, momentum[:3])
   for (long p = 0; p < n; ++p) {
     const double m = points_.mass[p];
     kinetic += 0.5 * m * points_.velocity[p].squaredNorm();

@@ -89,6 +89,8 @@ class Simulation {
 
  private:
   void update_materials(double dt);
+  double time_step(double signal_speed) const;
+  long fastest_point() const;  //!< point with the largest c + |v| (for CFL failures)
   [[noreturn]] void fail(long point, const std::string& what) const;
 
   SimulationSettings settings_;
