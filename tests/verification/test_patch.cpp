@@ -59,6 +59,11 @@ TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumLinear) {
 TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumGimp) {
   check_uniaxial_equilibrium("ugimp");
 }
+// The B-splines reach past the walls; the mirrored ghost nodes complete their stencils.
+TEST(Patch, UniaxialStressBetweenWallsStaysInEquilibriumBSplines) {
+  check_uniaxial_equilibrium("quadratic-bspline");
+  check_uniaxial_equilibrium("cubic-bspline");
+}
 
 void check_uniform_stretching(const std::string& kernel, int margin_cells) {
   const double a = 0.01;

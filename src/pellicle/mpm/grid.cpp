@@ -21,14 +21,14 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
   velocity.assign(node_count_, Vec<D>::Zero());
   velocity_change.assign(node_count_, Vec<D>::Zero());
 
-  // Nodes on a constrained face and the ghost layers beyond it take the face's condition;
-  // corners collect the conditions of every face they touch.
+  // Nodes on a constrained face take the face's condition; corners collect the conditions of
+  // every face they touch.
   for (long n = 0; n < node_count_; ++n) {
     const IVec<D> idx = unflatten(n);
     unsigned mask = 0;
     for (int d = 0; d < D; ++d) {
-      const bool low = idx[d] <= kGhost;
-      const bool high = idx[d] >= kGhost + cells_[d];
+      const bool low = idx[d] == kGhost;
+      const bool high = idx[d] == kGhost + cells_[d];
       for (int side = 0; side < 2; ++side) {
         if (!(side == 0 ? low : high)) continue;
         switch (faces_[2 * d + side]) {
@@ -45,6 +45,48 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
     }
     if (mask) constraints_.push_back({n, mask});
   }
+
+  // Ghost nodes beyond a constrained face are slaved to their mirror images inside:
+  // v_ghost = R v_mirror, R = −I at a fixed face (odd extension: zero velocity on the face)
+  // and the reflection of the normal component at a slip face (even extension). Axis by
+  // axis, so corner ghosts reach the interior through two reflections.
+  for (int d = 0; d < D; ++d) {
+    for (int side = 0; side < 2; ++side) {
+      const FaceCondition condition = faces_[2 * d + side];
+      if (condition == FaceCondition::free) continue;
+      const int face = side == 0 ? kGhost : kGhost + cells_[d];
+      const unsigned flips = condition == FaceCondition::fixed ? (1u << D) - 1u : 1u << d;
+      for (long n = 0; n < node_count_; ++n) {
+        IVec<D> idx = unflatten(n);
+        const int k = side == 0 ? face - idx[d] : idx[d] - face;  // layers beyond the face
+        if (k < 1) continue;
+        idx[d] = side == 0 ? face + k : face - k;
+        mirrors_.push_back({n, flatten(idx), flips});
+      }
+    }
+  }
+}
+
+template <int D>
+void Grid<D>::fold(std::vector<double>& field) const {
+  for (const auto& m : mirrors_) {
+    field[m.image] += field[m.ghost];
+    field[m.ghost] = 0.0;
+  }
+}
+
+template <int D>
+void Grid<D>::fold(std::vector<Vec<D>>& field) const {
+  for (const auto& m : mirrors_) {
+    field[m.image] += reflect(field[m.ghost], m.flips);
+    field[m.ghost].setZero();
+  }
+}
+
+template <int D>
+void Grid<D>::mirror(std::vector<Vec<D>>& field) const {
+  for (auto m = mirrors_.rbegin(); m != mirrors_.rend(); ++m)
+    field[m->ghost] = reflect(field[m->image], m->flips);
 }
 
 template <int D>
@@ -62,6 +104,8 @@ void Grid<D>::integrate(double dt) {
       velocity[n].setZero();
     }
   }
+  mirror(velocity);
+  mirror(velocity_change);
 }
 
 template <int D>
@@ -70,6 +114,7 @@ void Grid<D>::velocities_from_momentum() {
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < node_count_; ++n)
     velocity[n] = mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : Vec<D>::Zero();
+  mirror(velocity);
 }
 
 template class Grid<2>;

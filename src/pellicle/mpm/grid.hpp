@@ -10,7 +10,8 @@
 
 namespace pellicle {
 
-//! Condition on a grid face: nodes on and beyond the face are constrained.
+//! Condition on a grid face: nodes on the face are constrained, ghost nodes beyond it mirror
+//! the interior (see Grid::fold).
 enum class FaceCondition : std::uint8_t {
   free,   //!< no constraint
   slip,   //!< zero normal velocity (symmetry plane, frictionless wall, axisymmetric axis)
@@ -64,10 +65,20 @@ class Grid {
   const FaceConditions<D>& faces() const { return faces_; }
 
   //! Momentum-form explicit update (IJNME eqs 9, 11): velocity = (p + Δt f)/m and the
-  //! change over the step, both with the face conditions applied. Nodes without mass get zero.
+  //! change over the step, both with the face conditions applied and the ghosts mirrored.
+  //! Nodes without mass get zero.
   void integrate(double dt);
   //! velocity = p/m with the face conditions (convected velocity, thesis eq 3.24).
   void velocities_from_momentum();
+
+  //! Add what points scattered onto ghost nodes beyond constrained faces to the mirrored
+  //! interior nodes (mass as it is, vectors reflected) and clear the ghosts. The ghost
+  //! degrees of freedom are slaved, v_ghost = R v_image, so their mass, momentum and force
+  //! belong to the image node (Rᵀ of the constraint; R is its own transpose).
+  void fold(std::vector<double>& field) const;
+  void fold(std::vector<Vec<D>>& field) const;
+  //! Set ghost-node values beyond constrained faces from their images: v_ghost = R v_image.
+  void mirror(std::vector<Vec<D>>& field) const;
 
   //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
   void constrain(std::vector<Vec<D>>& field) const {
@@ -88,6 +99,16 @@ class Grid {
     long node;
     unsigned mask;  //!< bit d set: component d is held at zero
   };
+  struct Mirror {
+    long ghost, image;
+    unsigned flips;  //!< bit d set: component d changes sign between ghost and image
+  };
+  static Vec<D> reflect(const Vec<D>& v, unsigned flips) {
+    Vec<D> r = v;
+    for (int d = 0; d < D; ++d)
+      if (flips & (1u << d)) r[d] = -r[d];
+    return r;
+  }
   Vec<D> lower_, upper_, origin_;
   double h_, inv_h_;
   IVec<D> cells_, nodes_;
@@ -95,6 +116,7 @@ class Grid {
   long node_count_ = 0;
   FaceConditions<D> faces_;
   std::vector<Constraint> constraints_;
+  std::vector<Mirror> mirrors_;  //!< in axis order; mirror() walks them backwards
 };
 
 extern template class Grid<2>;

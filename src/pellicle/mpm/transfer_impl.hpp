@@ -236,6 +236,9 @@ class TransferImpl final : public Transfer<D> {
       buffers_.touched(t, lo, hi);
     }
     buffers_.reduce(grid, WithMass, with_momentum, WithForce);
+    if constexpr (WithMass) grid.fold(grid.mass);
+    if constexpr (with_momentum) grid.fold(grid.momentum);
+    if constexpr (WithForce) grid.fold(grid.force);
   }
 
   static long last_node_offset(const std::array<long, D>& strides) {
