@@ -17,7 +17,9 @@ void step(benchmark::State& state, const std::string& kernel, const std::string&
 }
 
 BENCHMARK_CAPTURE(step, linear_flip, "linear", "flip")->Arg(250000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(step, quadratic_apic, "quadratic-bspline", "apic")->Arg(250000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(step, quadratic_apic, "quadratic-bspline", "apic")
+    ->Arg(250000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(step, quadratic_flip, "quadratic-bspline", "flip")
     ->Arg(250000)
     ->Unit(benchmark::kMillisecond);

@@ -66,7 +66,8 @@ class ParameterReader {
 
 //! A required vector of D numbers.
 template <int D>
-Vec<D> read_vector(ParameterReader& in, std::string_view key, NumberRange range = NumberRange::any()) {
+Vec<D> read_vector(ParameterReader& in, std::string_view key,
+                   NumberRange range = NumberRange::any()) {
   const std::vector<double> v = in.numbers(key, D, range);
   Vec<D> x;
   for (int d = 0; d < D; ++d) x[d] = v[d];
