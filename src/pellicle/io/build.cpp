@@ -15,6 +15,38 @@ double point_volume(double cell, int points_per_cell, Kinematics kinematics, con
   return kinematics == Kinematics::axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v;
 }
 
+namespace {
+
+//! Where a body's points are and what each stands for: filled sub-cells of a region, or the
+//! samples of a membrane (volume = length or area × thickness, IJNME §3: m = ρ Δs t).
+template <int D>
+std::vector<std::pair<Vec<D>, double>> body_points(const Case<D>& c, const BodySpec<D>& b) {
+  std::vector<std::pair<Vec<D>, double>> out;
+  const bool axisymmetric = c.settings.kinematics == Kinematics::axisymmetric;
+  if (b.membrane) {
+    for (std::size_t i = 0; i < b.membrane->points.size(); ++i) {
+      const Vec<D>& x = b.membrane->points[i];
+      const double v = b.membrane->measure[i] * b.thickness;
+      out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
+    }
+  } else {
+    for (const auto& x :
+         fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell))
+      out.emplace_back(x, point_volume<D>(c.cell, b.points_per_cell, c.settings.kinematics, x));
+  }
+  return out;
+}
+
+template <int D>
+std::shared_ptr<FrameEstimator<D>> frame_estimator(const BodySpec<D>& b) {
+  if (!b.membrane) return nullptr;
+  for (const auto& e : frame_estimators<D>())
+    if (e.name == b.frames) return e.make(b.membrane->connectivity);
+  return nullptr;
+}
+
+}  // namespace
+
 template <int D>
 std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   Grid<D> grid(c.lower, c.upper, c.cell, c.faces);
@@ -22,26 +54,47 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   std::vector<InputProblem> problems;
   for (const auto& b : c.bodies) {
     const Material<D>& material = *c.materials[b.material];
-    const auto positions = fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell);
+    const auto positions = body_points(c, b);
     if (positions.empty()) {
       problems.push_back({b.where, "body.region",
                           "body '" + b.name + "': the region holds no point inside the grid"});
       continue;
     }
-    points.bodies.push_back({b.name, b.material, Vec<D>::Zero(), points.size(), points.size()});
+    bool outside = false;
+    for (const auto& [x, v] : positions) outside = outside || !grid.contains(x);
+    if (outside) {
+      problems.push_back({b.where, "body.membrane",
+                          "body '" + b.name + "': membrane points lie outside the grid"});
+      continue;
+    }
+    for (const auto& [index, mass] : b.point_masses)
+      if (index >= static_cast<long>(positions.size()))
+        problems.push_back({b.where, "body.point_masses",
+                            "body '" + b.name + "': no point " + std::to_string(index) +
+                                " (it has " + std::to_string(positions.size()) + ")"});
+    points.bodies.push_back({b.name, b.material, Vec<D>::Zero(), points.size(), points.size(),
+                             frame_estimator(b)});
     const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
     const Sym<D> stress =
         b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);
     double body_mass = 0.0;
     Vec<D> first_moment = Vec<D>::Zero();
-    for (const auto& x : positions) {
-      const double m =
-          material.density() * point_volume<D>(c.cell, b.points_per_cell, c.settings.kinematics, x);
+    for (const auto& [x, volume] : positions) {
+      const double m = material.density() * volume;
       points.add(x, b.velocity, m, material.density(), stress, strain);
-      body_mass += m;
-      first_moment += m * x;
     }
     auto& body = points.bodies.back();
+    // Point masses given explicitly (an end mass on a string) keep their point's volume.
+    for (const auto& [index, mass] : b.point_masses) {
+      if (index >= body.count()) continue;
+      const long p = body.begin + index;
+      points.mass[p] = mass;
+      points.density[p] = mass / points.volume[p];
+    }
+    for (long p = body.begin; p < body.end; ++p) {
+      body_mass += points.mass[p];
+      first_moment += points.mass[p] * points.position[p];
+    }
     body.applied_acceleration = b.external_force / body_mass;
     const Vec<D> center = b.center.value_or(first_moment / body_mass);
     for (long p = body.begin; p < body.end; ++p) {

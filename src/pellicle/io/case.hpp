@@ -9,6 +9,7 @@
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/types.hpp"
+#include "pellicle/geometry/membrane_geometry.hpp"
 #include "pellicle/geometry/region.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/materials/material.hpp"
@@ -36,7 +37,12 @@ struct BodySpec {
   std::optional<Vec<D>> center;            //!< c; default: the body's centre of mass
   Vec<D> external_force = Vec<D>::Zero();  //!< total, spread over the body by mass
   std::optional<Sym<D>> initial_stress, initial_strain;
-  RegionPtr<D> region;
+  RegionPtr<D> region;  //!< solids: the region the points fill
+  //! Membranes: the sampled curve or surface, its thickness and frame estimator.
+  std::optional<MembraneGeometry<D>> membrane;
+  double thickness = 0.0;
+  std::string frames = "connectivity";
+  std::vector<std::pair<long, double>> point_masses;  //!< (index in body, mass) overrides
   SourceLocation where;  //!< the body's table, for problems found when filling it
 };
 

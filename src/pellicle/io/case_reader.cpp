@@ -8,6 +8,7 @@
 #include "pellicle/geometry/region_factory.hpp"
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/toml_parameters.hpp"
+#include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
 
@@ -236,6 +237,7 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   c.settings.fixed_dt = s->number_or("dt", 0.0, NumberRange::positive());
   c.settings.cfl_fraction = s->number_or("cfl", 0.5, NumberRange::open_closed(0.0, 1.0));
   if (c.settings.fixed_dt > 0.0) c.settings.cfl_fraction = 0.0;
+  c.settings.cfl_limit = s->number_or("cfl_limit", 1.0, NumberRange::positive());
   c.gravity = read_vector_or<D>(*s, "gravity", Vec<D>::Zero());
 }
 
@@ -268,6 +270,31 @@ void read_materials(TomlParameters& root, Case<D>& c) {
   }
 }
 
+//! A body is either a solid filling a region or a membrane on a curve or surface; its
+//! material must be of the same kind.
+template <int D>
+void read_membrane_or_region(TomlParameters& t, Case<D>& c, BodySpec<D>& b) {
+  const bool membrane = t.has("membrane");
+  if (membrane && t.has("region")) t.fail("membrane", "give either region (solid) or membrane");
+  if (membrane) {
+    auto m = t.sub_table("membrane", true);
+    const std::string base = std::filesystem::path(c.file).parent_path().string();
+    b.membrane = make_membrane_geometry<D>(*m, c.cell, base.empty() ? "." : base);
+    b.thickness = m->number("thickness", NumberRange::positive());
+    std::vector<std::string> estimators;
+    for (const auto& e : frame_estimators<D>()) estimators.push_back(e.name);
+    b.frames = m->choice("frames", estimators, "connectivity");
+  } else {
+    b.region = make_region<D>(*t.sub_table("region", true));
+  }
+  const Material<D>* material = b.material < static_cast<int>(c.materials.size())
+                                    ? c.materials[b.material].get()
+                                    : nullptr;
+  if (material && material->is_membrane() != membrane)
+    t.fail("material", membrane ? "expected a material with model = \"membrane\" for a membrane body"
+                                : "expected a solid material: model \"membrane\" needs a membrane body");
+}
+
 template <int D>
 void read_bodies(TomlParameters& root, Case<D>& c) {
   std::set<std::string> names;
@@ -282,7 +309,8 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     if (it == c.material_names.end() && !material.empty())
       t->fail("material", "expected the name of a [[material]], found \"" + material + "\"");
     b.material = it == c.material_names.end() ? 0 : static_cast<int>(it - c.material_names.begin());
-    b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
+    read_membrane_or_region(*t, c, b);
+    if (!b.membrane) b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
     b.velocity = read_vector_or<D>(*t, "velocity", Vec<D>::Zero());
     if constexpr (D == 2) {
       b.angular_velocity.z() = t->number_or("angular_velocity", 0.0, NumberRange::any());
@@ -299,13 +327,22 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     }
     if (t->has("center")) b.center = read_vector<D>(*t, "center");
     b.external_force = read_vector_or<D>(*t, "external_force", Vec<D>::Zero());
+    if (t->has("point_masses")) {
+      for (const auto& entry : t->number_lists("point_masses", 2)) {
+        if (entry[0] < 0 || entry[0] != std::floor(entry[0]) || !(entry[1] > 0))
+          t->fail("point_masses", "expected [[index, mass], …] with whole indices >= 0 and masses > 0");
+        else
+          b.point_masses.emplace_back(static_cast<long>(entry[0]), entry[1]);
+      }
+    }
+    if (t->has("initial_stress") && b.membrane)
+      t->fail("initial_stress", "membranes take initial_strain (their stress follows from it)");
     if (t->has("initial_stress") && t->has("initial_strain"))
       t->fail("initial_strain", "give either initial_stress or initial_strain, not both");
     if (t->has("initial_stress"))
       b.initial_stress = read_tensor<D>(*t->sub_table("initial_stress", true));
     if (t->has("initial_strain"))
       b.initial_strain = read_tensor<D>(*t->sub_table("initial_strain", true));
-    b.region = make_region<D>(*t->sub_table("region", true));
     c.bodies.push_back(std::move(b));
   }
 }

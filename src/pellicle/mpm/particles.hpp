@@ -2,10 +2,12 @@
 //! Material points, stored as one array per quantity (structure of arrays). Points of one
 //! body are contiguous: body b owns [bodies[b].begin, bodies[b].end).
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
 
@@ -16,6 +18,8 @@ struct BodyInfo {
   int material = 0;                              //!< index into the simulation's materials
   Vec<D> applied_acceleration = Vec<D>::Zero();  //!< external force / body mass
   long begin = 0, end = 0;                       //!< point range
+  //! Membrane bodies: how their points' frames are estimated; null for solids.
+  std::shared_ptr<FrameEstimator<D>> frames;
   long count() const { return end - begin; }
 };
 
@@ -29,6 +33,8 @@ struct Particles {
   std::vector<Sym<D>> stress;   //!< Cauchy stress
   std::vector<Sym<D>> strain;   //!< accumulated small strain Σ Δε
   std::vector<Mat<D>> affine;   //!< APIC affine velocity C_p (only sized when APIC is used)
+  std::vector<Vec<D>> normal;   //!< membrane points: unit normal of the local frame (else 0)
+  std::vector<Vec<D>> tangent;  //!< membrane points: unit tangent (3D: t1; t2 = n × t1)
   std::vector<int> body;        //!< body index of each point
   std::vector<BodyInfo<D>> bodies;
 
@@ -44,6 +50,8 @@ struct Particles {
     volume.push_back(m / rho);
     stress.push_back(s);
     strain.push_back(e);
+    normal.push_back(Vec<D>::Zero());
+    tangent.push_back(Vec<D>::Zero());
     body.push_back(static_cast<int>(bodies.size()) - 1);
     bodies.back().end = size();
   }

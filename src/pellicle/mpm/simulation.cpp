@@ -23,6 +23,21 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   for (const auto& v : points_.velocity) max_speed_ = std::max(max_speed_, v.norm());
   if (points_.affine.size() != points_.position.size())
     points_.affine.assign(points_.position.size(), Mat<D>::Zero());
+  // Membrane stresses follow from their strains in their frames: settle them once before
+  // the first step (a zero step changes nothing else).
+  update_frames();
+  velocity_gradient_.assign(points_.size(), Mat<D>::Zero());
+  if (settings_.kinematics == Kinematics::axisymmetric) hoop_rate_.assign(points_.size(), 0.0);
+  for (const auto& body : points_.bodies)
+    if (materials_[body.material]->is_membrane())
+      materials_[body.material]->update({points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end});
+}
+
+template <int D>
+void Simulation<D>::update_frames() {
+  for (const auto& body : points_.bodies)
+    if (body.frames)
+      body.frames->estimate(points_.position, body.begin, body.end, points_.normal, points_.tangent);
 }
 
 template <int D>
@@ -30,9 +45,9 @@ void Simulation<D>::step() {
   const double signal = max_signal_speed();
   const double dt = time_step(signal);
   cfl_number_ = dt * signal / grid_.cell();
-  if (cfl_number_ > 1.0) {
+  if (cfl_number_ > settings_.cfl_limit) {
     std::ostringstream what;
-    what << "CFL number " << cfl_number_ << " > 1 with dt = " << dt
+    what << "CFL number " << cfl_number_ << " > " << settings_.cfl_limit << " with dt = " << dt
          << " (this point is the fastest signal); reduce solver.dt or use solver.cfl";
     fail(fastest_point(), what.str());
   }
@@ -123,6 +138,7 @@ template <int D>
 void Simulation<D>::update_materials(double dt) {
   const long bad = transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
   if (bad >= 0) fail(bad, "non-positive or non-finite density");
+  update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
   for (const auto& body : points_.bodies) {
     const MaterialStep<D> step{points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end};
     materials_[body.material]->update(step);

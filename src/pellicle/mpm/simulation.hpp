@@ -26,6 +26,7 @@ struct SimulationSettings {
   Kinematics kinematics = Kinematics::plane_strain;
   double fixed_dt = 0.0;      //!< > 0: fixed time step
   double cfl_fraction = 0.0;  //!< > 0: Δt = fraction × h / max(c + |v|), every step
+  double cfl_limit = 1.0;     //!< a step whose CFL number exceeds this stops the run
   double end_time = 1.0;
 };
 
@@ -89,6 +90,7 @@ class Simulation {
 
  private:
   void update_materials(double dt);
+  void update_frames();
   double time_step(double signal_speed) const;
   long fastest_point() const;  //!< point with the largest c + |v| (for CFL failures)
   [[noreturn]] void fail(long point, const std::string& what) const;

@@ -18,7 +18,7 @@ enum class Kinematics { plane_strain, plane_stress, axisymmetric, solid };
 //! What a material needs for one step over the points [begin, end).
 template <int D>
 struct MaterialStep {
-  Particles<D>& points;
+  Particles<D>& points;  //!< membrane points carry their current frames (normal, tangent)
   const std::vector<Mat<D>>& velocity_gradient;  //!< L_ij = ∂v_i/∂x_j at each point
   const std::vector<double>& hoop_rate;          //!< v_r/r (axisymmetric), else empty
   double dt;
@@ -41,6 +41,8 @@ class Material {
   virtual Sym<D> stress_from_strain(const Sym<D>& strain) const = 0;
   //! Reference mass density of the material.
   virtual double density() const = 0;
+  //! Membrane models need a body of membrane points with frames; solids fill regions.
+  virtual bool is_membrane() const { return false; }
 
   Kinematics kinematics() const { return kinematics_; }
 

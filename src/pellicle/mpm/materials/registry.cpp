@@ -1,6 +1,7 @@
 //! The material registry: adding a model is one new file and one line here.
 #include "pellicle/mpm/materials/linear_elastic.hpp"
 #include "pellicle/mpm/materials/material.hpp"
+#include "pellicle/mpm/materials/membrane.hpp"
 
 namespace pellicle {
 
@@ -9,6 +10,8 @@ const std::vector<MaterialModel<D>>& material_models() {
   static const std::vector<MaterialModel<D>> models = {
       {"linear-elastic", "isotropic linear elasticity, Jaumann stress rate (IJNME eqs 2, 14)",
        &make_linear_elastic<D>},
+      {"membrane", "strings and membranes in their local frame (thesis ch. 5, IJNME §3)",
+       &make_membrane<D>},
   };
   return models;
 }

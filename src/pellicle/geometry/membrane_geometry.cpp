@@ -1,0 +1,148 @@
+#include "pellicle/geometry/membrane_geometry.hpp"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "pellicle/core/error.hpp"
+#include "pellicle/geometry/curve.hpp"
+#include "pellicle/geometry/surface_mesh.hpp"
+
+namespace pellicle {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+std::vector<Vec2> read_points(ParameterReader& in, std::string_view key, std::size_t at_least) {
+  std::vector<Vec2> out;
+  for (const auto& v : in.number_lists(key, 2)) out.emplace_back(v[0], v[1]);
+  if (out.size() < at_least) {
+    in.fail(key, "expected at least " + std::to_string(at_least) + " points");
+    out.assign(at_least, Vec2::Zero());
+    for (std::size_t i = 0; i < at_least; ++i) out[i].x() = static_cast<double>(i);
+  }
+  return out;
+}
+
+MembraneGeometry<2> from_curve(const SampledCurve& c) {
+  MembraneGeometry<2> g;
+  g.points = c.points;
+  g.measure = c.lengths;
+  g.connectivity.closed_curve = c.closed;
+  const std::size_t n = c.points.size();
+  for (std::size_t i = 0; i + 1 < n + (c.closed ? 1 : 0); ++i)
+    g.longest_gap = std::max(g.longest_gap, (c.points[(i + 1) % n] - c.points[i]).norm());
+  return g;
+}
+
+MembraneGeometry<3> from_mesh(const SurfaceMesh& m) {
+  MembraneGeometry<3> g;
+  g.points = m.vertices;
+  g.measure = vertex_areas(m);
+  g.connectivity.triangles = m.triangles;
+  g.longest_gap = longest_edge(m);
+  return g;
+}
+
+MembraneGeometry<2> curve(ParameterReader& in, double cell) {
+  const std::string shape = in.choice("shape", {"polyline", "circle", "ellipse", "spline"});
+  if (shape.empty()) {
+    in.ignore_rest();
+    return from_curve(sample_polyline({Vec2(0, 0), Vec2(1, 0)}, false, {1.0, 0}));
+  }
+  Sampling sampling;
+  sampling.count = static_cast<int>(in.integer_or("points", 0, 0, 100000000));
+  if (in.has("points") && in.has("spacing")) in.fail("spacing", "give either points or spacing");
+  sampling.spacing = in.number_or("spacing", 0.25 * cell, NumberRange::positive());
+  if (shape == "polyline") {
+    const auto vertices = read_points(in, "vertices", 2);
+    return from_curve(sample_polyline(vertices, in.flag_or("closed", false), sampling));
+  }
+  if (shape == "spline") {
+    const auto through = read_points(in, "through", 2);
+    return from_curve(sample_spline(through, in.flag_or("closed", false), sampling));
+  }
+  const Vec2 center = read_vector<2>(in, "center");
+  const Vec2 axes = shape == "circle" ? Vec2::Constant(in.number("radius", NumberRange::positive()))
+                                      : read_vector<2>(in, "semi_axes", NumberRange::positive());
+  const double from = in.number_or("start_angle", 0.0, NumberRange::any());
+  const double to = in.number_or("end_angle", from + 360.0, NumberRange::any());
+  if (to <= from || to - from > 360.0)
+    in.fail("end_angle", "expected start_angle < end_angle <= start_angle + 360");
+  return from_curve(sample_ellipse_arc(center, axes, from * kDegree,
+                                       std::min(to, from + 360.0) * kDegree, sampling));
+}
+
+MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string& base) {
+  const std::string shape = in.choice(
+      "shape", {"rectangle", "disk", "sphere", "ellipsoid", "cylinder", "torus", "mesh"});
+  if (shape.empty()) {
+    in.ignore_rest();
+    return from_mesh(make_rectangle_patch(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 1.0));
+  }
+  const double ds = in.number_or("spacing", 0.25 * cell, NumberRange::positive());
+  const auto positive = NumberRange::positive();
+  if (shape == "rectangle") {
+    const Vec3 corner = read_vector<3>(in, "corner"), u = read_vector<3>(in, "edge_u"),
+               v = read_vector<3>(in, "edge_v");
+    if (u.cross(v).norm() == 0.0) in.fail("edge_v", "expected edges that are not parallel");
+    return from_mesh(make_rectangle_patch(corner, u, v, ds));
+  }
+  if (shape == "disk") {
+    const Vec3 c = read_vector<3>(in, "center"), n = read_vector<3>(in, "normal");
+    if (n.norm() == 0.0) in.fail("normal", "expected a non-zero vector");
+    return from_mesh(make_disk(c, n.norm() > 0 ? n : Vec3::UnitZ(), in.number("radius", positive), ds));
+  }
+  if (shape == "sphere" || shape == "ellipsoid") {
+    const Vec3 c = read_vector<3>(in, "center");
+    const Vec3 a = shape == "sphere" ? Vec3::Constant(in.number("radius", positive))
+                                     : read_vector<3>(in, "semi_axes", positive);
+    return from_mesh(make_ellipsoid(c, a, ds));
+  }
+  if (shape == "cylinder" || shape == "torus") {
+    const Vec3 c = read_vector<3>(in, "center"), axis = read_vector<3>(in, "axis");
+    const Vec3 a = axis.norm() > 0 ? axis : Vec3::UnitZ();
+    if (axis.norm() == 0.0) in.fail("axis", "expected a non-zero vector");
+    if (shape == "cylinder")
+      return from_mesh(make_cylinder(c, a, in.number("radius", positive), in.number("height", positive), ds));
+    const double major = in.number("major_radius", positive), minor = in.number("minor_radius", positive);
+    if (minor >= major) in.fail("minor_radius", "expected minor_radius < major_radius");
+    return from_mesh(make_torus(c, a, major, minor, ds));
+  }
+  // A triangulated surface from a file.
+  const std::string file = in.text("file");
+  const double scale = in.number_or("scale", 1.0, positive);
+  const Vec3 shift = read_vector_or<3>(in, "translate", Vec3::Zero());
+  const std::filesystem::path path = std::filesystem::path(base) / file;
+  SurfaceMesh mesh;
+  try {
+    const std::string ext = path.extension().string();
+    if (ext == ".stl" || ext == ".STL") mesh = read_stl(path.string());
+    else if (ext == ".obj" || ext == ".OBJ") mesh = read_obj(path.string());
+    else in.fail("file", "expected a .stl or .obj file, found \"" + file + "\"");
+  } catch (const InputError& e) {
+    in.fail("file", e.what());
+  }
+  if (mesh.triangles.empty()) return from_mesh(make_rectangle_patch(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 1.0));
+  drop_unused_vertices(mesh);
+  for (auto& v : mesh.vertices) v = scale * v + shift;
+  refine(mesh, ds);
+  return from_mesh(mesh);
+}
+
+}  // namespace
+
+template <>
+MembraneGeometry<2> make_membrane_geometry<2>(ParameterReader& in, double cell, const std::string&) {
+  return curve(in, cell);
+}
+
+template <>
+MembraneGeometry<3> make_membrane_geometry<3>(ParameterReader& in, double cell,
+                                              const std::string& base_directory) {
+  return surface(in, cell, base_directory);
+}
+
+}  // namespace pellicle

@@ -1,0 +1,148 @@
+#include "pellicle/mpm/materials/membrane.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pellicle/mpm/materials/kinematics.hpp"
+
+namespace pellicle {
+
+template <int D>
+Membrane<D>::Membrane(Kinematics kinematics, double density, double youngs_modulus,
+                      double poisson_ratio, MembraneLaw law, bool one_way)
+    : Material<D>(kinematics),
+      density_(density),
+      young_(youngs_modulus),
+      poisson_(poisson_ratio),
+      uniaxial_(law == MembraneLaw::uniaxial || kinematics == Kinematics::plane_stress),
+      one_way_(one_way) {}
+
+template <int D>
+double Membrane<D>::wave_modulus() const {
+  return uniaxial_ ? young_ : young_ / (1.0 - poisson_ * poisson_);
+}
+
+template <int D>
+void Membrane<D>::local_stress(double e11, double& e22, double e12, double& s11, double& s22,
+                               double& s12) const {
+  const double E = young_, nu = poisson_;
+  if (uniaxial_) {  // thesis eqs 5.5–5.9; one-way: no compressive stress (§5.2)
+    e22 = -nu * e11;
+    s11 = one_way_ && e11 < 0.0 ? 0.0 : E * e11;
+    s22 = s12 = 0.0;
+    return;
+  }
+  const double C = E / (1.0 - nu * nu);  // plane stress, thesis eqs 5.12–5.15
+  auto plane_stress = [&] {
+    s11 = C * (e11 + nu * e22);
+    s22 = C * (e22 + nu * e11);
+    s12 = C * (1.0 - nu) * e12;
+  };
+  if (!one_way_) return plane_stress();
+  // Tension field: principal in-plane strains e1 ≥ e2.
+  const double mean = 0.5 * (e11 + e22), half_diff = 0.5 * (e11 - e22);
+  const double radius = std::sqrt(half_diff * half_diff + e12 * e12);
+  const double e1 = mean + radius, e2 = mean - radius;
+  if (C * (e2 + nu * e1) >= 0.0) return plane_stress();  // taut
+  if (e1 <= 0.0) {                                       // slack
+    s11 = s22 = s12 = 0.0;
+    return;
+  }
+  // Wrinkled: uniaxial tension E e1 along the first principal direction d1 (radius > 0 here).
+  const double cos2 = half_diff / radius, sin2 = e12 / radius;
+  s11 = E * e1 * 0.5 * (1.0 + cos2);
+  s22 = E * e1 * 0.5 * (1.0 - cos2);
+  s12 = E * e1 * 0.5 * sin2;
+}
+
+namespace {
+//! Rows: the local axes 1' (tangent), 2' (second in-surface direction), 3' (normal).
+inline Mat3 local_axes(const Vec2& t, const Vec2& n) {
+  Mat3 Q;
+  Q << t.x(), t.y(), 0.0, 0.0, 0.0, 1.0, n.x(), n.y(), 0.0;
+  return Q;
+}
+inline Mat3 local_axes(const Vec3& t, const Vec3& n) {
+  Mat3 Q;
+  Q.row(0) = t.transpose();
+  Q.row(1) = n.cross(t).transpose();
+  Q.row(2) = n.transpose();
+  return Q;
+}
+}  // namespace
+
+template <int D>
+void Membrane<D>::update(const MaterialStep<D>& step) const {
+  auto& pts = step.points;
+  const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
+  const double nu = poisson_;
+#pragma omp parallel for schedule(static)
+  for (long p = step.begin; p < step.end; ++p) {
+    const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
+                                          axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
+    const Mat3 Q = local_axes(pts.tangent[p], pts.normal[p]);
+    const Mat3 local = Q * to_mat3<D>(pts.strain[p] + de) * Q.transpose();  // thesis eq 5.3
+    const double e11 = local(0, 0), e12 = local(0, 1);
+    double e22 = local(1, 1), s11, s22, s12;
+    local_stress(e11, e22, e12, s11, s22, s12);
+    const double e33 = uniaxial_ ? -nu * e11 : -nu / (1.0 - nu) * (e11 + e22);
+    Mat3 stress_local = Mat3::Zero(), strain_local = Mat3::Zero();
+    stress_local(0, 0) = s11;
+    stress_local(1, 1) = s22;
+    stress_local(0, 1) = stress_local(1, 0) = s12;
+    strain_local(0, 0) = e11;
+    strain_local(1, 1) = e22;
+    strain_local(0, 1) = strain_local(1, 0) = e12;
+    strain_local(2, 2) = e33;
+    pts.stress[p] = from_mat3<D>(Q.transpose() * stress_local * Q);
+    pts.strain[p] = from_mat3<D>(Q.transpose() * strain_local * Q);
+  }
+}
+
+template <int D>
+double Membrane<D>::max_wave_speed(const Particles<D>& points, long begin, long end) const {
+  // The smallest density gives the fastest wave (heavy end masses are slower).
+  double min_density = density_;
+#pragma omp parallel for reduction(min : min_density) schedule(static)
+  for (long p = begin; p < end; ++p) min_density = std::min(min_density, points.density[p]);
+  return std::sqrt(wave_modulus() / min_density);
+}
+
+template <int D>
+double Membrane<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
+  // ½ σ : ε V with the adjusted strain: the local law's energy (zero when slack).
+  double energy = 0.0;
+#pragma omp parallel for reduction(+ : energy) schedule(static)
+  for (long p = begin; p < end; ++p)
+    energy += 0.5 * points.volume[p] * contract<D>(points.stress[p], points.strain[p]);
+  return energy;
+}
+
+template <int D>
+Sym<D> Membrane<D>::stress_from_strain(const Sym<D>&) const {
+  return Sym<D>::Zero();
+}
+
+template <int D>
+std::unique_ptr<Material<D>> make_membrane(ParameterReader& in, Kinematics kinematics) {
+  const double rho = in.number("density", NumberRange::positive());
+  const double E = in.number("youngs_modulus", NumberRange::positive());
+  const double nu = in.number_or("poisson_ratio", 0.0, {-1.0, 0.5, true, true});
+  const std::string law = in.choice("law", {"uniaxial", "plane-stress"},
+                                    D == 2 ? "uniaxial" : "plane-stress");
+  if (D == 3 && law == "uniaxial")
+    in.fail("law", "expected \"plane-stress\": 3D membranes are surfaces");
+  const bool one_way = in.flag_or("one_way", false);
+  return std::make_unique<Membrane<D>>(
+      kinematics, rho, E, nu, law == "uniaxial" ? MembraneLaw::uniaxial : MembraneLaw::plane_stress,
+      one_way);
+}
+
+template class Membrane<2>;
+template class Membrane<3>;
+template std::unique_ptr<Material<2>> make_membrane<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_membrane<3>(ParameterReader&, Kinematics);
+
+}  // namespace pellicle

@@ -1,0 +1,19 @@
+//! The frame-estimator registry: one line per estimator.
+#include "pellicle/normals/connectivity.hpp"
+#include "pellicle/normals/frame_estimator.hpp"
+
+namespace pellicle {
+
+template <int D>
+const std::vector<FrameEstimatorChoice<D>>& frame_estimators() {
+  static const std::vector<FrameEstimatorChoice<D>> list = {
+      {"connectivity", "neighbours in generation order (thesis eq 7.1); mesh normals in 3D",
+       &make_connectivity_estimator<D>},
+  };
+  return list;
+}
+
+template const std::vector<FrameEstimatorChoice<2>>& frame_estimators<2>();
+template const std::vector<FrameEstimatorChoice<3>>& frame_estimators<3>();
+
+}  // namespace pellicle
