@@ -52,6 +52,18 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
   }
   const double dt = s.planned_dt();
   const double cfl = dt * s.max_signal_speed() / g.cell();
+  for (const auto& b : c.bodies) {
+    if (!b.membrane) continue;
+    std::fprintf(out,
+                 "membrane  %-16s spacing up to %.4g (%.2g cells), thickness %g, frames '%s'\n",
+                 b.name.c_str(), b.membrane->longest_gap, b.membrane->longest_gap / g.cell(),
+                 b.thickness, b.frames.c_str());
+    if (b.membrane->longest_gap > g.cell())
+      std::fprintf(out,
+                   "warning   body '%s': neighbouring points are more than a cell apart; the "
+                   "membrane would break (thesis §5.4.4): reduce its spacing\n",
+                   b.name.c_str());
+  }
   std::fprintf(out, "points    %ld in all\n", p.size());
   std::fprintf(out, "time      end %g, dt %.6g (%s), CFL number %.3g, about %.0f steps\n",
                c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,
@@ -67,6 +79,8 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   Case<D> c = read_case<D>(source);
   if (!o.out_dir.empty()) c.output.directory = o.out_dir;
   auto simulation = build_simulation<D>(c);
+  std::vector<Probe<D>> probes;
+  for (const auto& spec : c.probes) probes.emplace_back(spec, *simulation);
   if (check_only) {
     print_summary(c, *simulation, stdout);
     std::printf("check     ok\n");
@@ -75,7 +89,7 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   if (!o.quiet) print_summary(c, *simulation, stderr);
   std::unique_ptr<OutputWriter<D>> writer;
   try {
-    writer = std::make_unique<OutputWriter<D>>(c.output, *simulation);
+    writer = std::make_unique<OutputWriter<D>>(c.output, *simulation, std::move(probes));
   } catch (const std::runtime_error& e) {  // the output directory is part of the input
     throw InputError(SourceLocation{c.file, 0, 0}, "output.directory", e.what());
   }

@@ -1,5 +1,6 @@
 //! `pellicle validate`: run the validation problems, print every check, and write the
 //! series (CSV), their plots (PNG, via tools/plot_validation.py) and report.md.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -21,7 +22,11 @@ using validation::Problem;
 
 void write_series(const fs::path& dir, const Problem& problem, const validation::Series& s) {
   std::string csv = "# " + s.title + "\n";
-  for (std::size_t c = 0; c < s.columns.size(); ++c) csv += (c ? "," : "") + s.columns[c];
+  for (std::size_t c = 0; c < s.columns.size(); ++c) {
+    std::string name = s.columns[c];
+    std::replace(name.begin(), name.end(), ',', ';');  // keep the header one field per column
+    csv += (c ? "," : "") + name;
+  }
   csv += '\n';
   char number[32];
   for (const auto& row : s.rows) {

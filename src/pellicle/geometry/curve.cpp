@@ -82,13 +82,14 @@ SampledCurve sample_spline(const std::vector<Vec2>& through, bool closed, Sampli
     const int i = static_cast<int>(t);
     const double f = t - i;
     const Vec2 p0 = point(i - 1), p1 = point(i), p2 = point(i + 1), p3 = point(i + 2);
-    const double t0 = 0.0, t1 = t0 + std::sqrt((p1 - p0).norm()), t2 = t1 + std::sqrt((p2 - p1).norm()),
-                 t3 = t2 + std::sqrt((p3 - p2).norm());
+    const double t0 = 0.0, t1 = t0 + std::sqrt((p1 - p0).norm()),
+                 t2 = t1 + std::sqrt((p2 - p1).norm()), t3 = t2 + std::sqrt((p3 - p2).norm());
     const double tt = t1 + f * (t2 - t1);
     auto lerp = [](const Vec2& a, const Vec2& b, double ta, double tb, double tv) {
       return tb > ta ? Vec2((tb - tv) / (tb - ta) * a + (tv - ta) / (tb - ta) * b) : a;
     };
-    const Vec2 a1 = lerp(p0, p1, t0, t1, tt), a2 = lerp(p1, p2, t1, t2, tt), a3 = lerp(p2, p3, t2, t3, tt);
+    const Vec2 a1 = lerp(p0, p1, t0, t1, tt), a2 = lerp(p1, p2, t1, t2, tt),
+               a3 = lerp(p2, p3, t2, t3, tt);
     const Vec2 b1 = lerp(a1, a2, t0, t2, tt), b2 = lerp(a2, a3, t1, t3, tt);
     return lerp(b1, b2, t1, t2, tt);
   };

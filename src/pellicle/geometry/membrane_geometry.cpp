@@ -76,8 +76,8 @@ MembraneGeometry<2> curve(ParameterReader& in, double cell) {
 }
 
 MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string& base) {
-  const std::string shape = in.choice(
-      "shape", {"rectangle", "disk", "sphere", "ellipsoid", "cylinder", "torus", "mesh"});
+  const std::string shape =
+      in.choice("shape", {"rectangle", "disk", "sphere", "ellipsoid", "cylinder", "torus", "mesh"});
   if (shape.empty()) {
     in.ignore_rest();
     return from_mesh(make_rectangle_patch(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 1.0));
@@ -93,7 +93,8 @@ MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string&
   if (shape == "disk") {
     const Vec3 c = read_vector<3>(in, "center"), n = read_vector<3>(in, "normal");
     if (n.norm() == 0.0) in.fail("normal", "expected a non-zero vector");
-    return from_mesh(make_disk(c, n.norm() > 0 ? n : Vec3::UnitZ(), in.number("radius", positive), ds));
+    return from_mesh(
+        make_disk(c, n.norm() > 0 ? n : Vec3::UnitZ(), in.number("radius", positive), ds));
   }
   if (shape == "sphere" || shape == "ellipsoid") {
     const Vec3 c = read_vector<3>(in, "center");
@@ -106,8 +107,10 @@ MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string&
     const Vec3 a = axis.norm() > 0 ? axis : Vec3::UnitZ();
     if (axis.norm() == 0.0) in.fail("axis", "expected a non-zero vector");
     if (shape == "cylinder")
-      return from_mesh(make_cylinder(c, a, in.number("radius", positive), in.number("height", positive), ds));
-    const double major = in.number("major_radius", positive), minor = in.number("minor_radius", positive);
+      return from_mesh(
+          make_cylinder(c, a, in.number("radius", positive), in.number("height", positive), ds));
+    const double major = in.number("major_radius", positive),
+                 minor = in.number("minor_radius", positive);
     if (minor >= major) in.fail("minor_radius", "expected minor_radius < major_radius");
     return from_mesh(make_torus(c, a, major, minor, ds));
   }
@@ -119,13 +122,17 @@ MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string&
   SurfaceMesh mesh;
   try {
     const std::string ext = path.extension().string();
-    if (ext == ".stl" || ext == ".STL") mesh = read_stl(path.string());
-    else if (ext == ".obj" || ext == ".OBJ") mesh = read_obj(path.string());
-    else in.fail("file", "expected a .stl or .obj file, found \"" + file + "\"");
+    if (ext == ".stl" || ext == ".STL")
+      mesh = read_stl(path.string());
+    else if (ext == ".obj" || ext == ".OBJ")
+      mesh = read_obj(path.string());
+    else
+      in.fail("file", "expected a .stl or .obj file, found \"" + file + "\"");
   } catch (const InputError& e) {
     in.fail("file", e.what());
   }
-  if (mesh.triangles.empty()) return from_mesh(make_rectangle_patch(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 1.0));
+  if (mesh.triangles.empty())
+    return from_mesh(make_rectangle_patch(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), 1.0));
   drop_unused_vertices(mesh);
   for (auto& v : mesh.vertices) v = scale * v + shift;
   refine(mesh, ds);
@@ -135,7 +142,8 @@ MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string&
 }  // namespace
 
 template <>
-MembraneGeometry<2> make_membrane_geometry<2>(ParameterReader& in, double cell, const std::string&) {
+MembraneGeometry<2> make_membrane_geometry<2>(ParameterReader& in, double cell,
+                                              const std::string&) {
   return curve(in, cell);
 }
 

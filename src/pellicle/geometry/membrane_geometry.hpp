@@ -39,7 +39,7 @@ struct MembraneGeometry {
   std::vector<Vec<D>> points;
   std::vector<double> measure;  //!< length (2D) or area (3D) each point stands for
   MembraneConnectivity connectivity;
-  double longest_gap = 0.0;     //!< largest distance between neighbouring points
+  double longest_gap = 0.0;  //!< largest distance between neighbouring points
 };
 
 //! Read and sample a membrane shape. `cell` sets the default spacing; `base_directory` is

@@ -1,5 +1,6 @@
 #include "pellicle/geometry/region.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace pellicle {
@@ -47,6 +48,25 @@ class HalfSpace final : public Region<D> {
 
  private:
   Vec<D> point_, normal_;
+};
+
+class Cylinder final : public Region<3> {
+ public:
+  Cylinder(const Vec3& c, const Vec3& axis, double r, double h)
+      : center_(c), axis_(axis.normalized()), radius_(r), half_(0.5 * h) {}
+  bool contains(const Vec3& x) const override {
+    const Vec3 d = x - center_;
+    const double along = d.dot(axis_);
+    return std::abs(along) <= half_ && (d - along * axis_).squaredNorm() <= radius_ * radius_;
+  }
+  Box<3> bounds() const override {
+    const double reach = radius_ + half_;  // generous: covers every orientation
+    return {center_ - Vec3::Constant(reach), center_ + Vec3::Constant(reach)};
+  }
+
+ private:
+  Vec3 center_, axis_;
+  double radius_, half_;
 };
 
 class Polygon final : public Region<2> {
@@ -143,6 +163,10 @@ RegionPtr<D> make_ellipsoid(const Vec<D>& center, const Vec<D>& semi_axes) {
 template <int D>
 RegionPtr<D> make_half_space(const Vec<D>& point, const Vec<D>& outward_normal) {
   return std::make_unique<HalfSpace<D>>(point, outward_normal);
+}
+RegionPtr<3> make_cylinder_region(const Vec3& center, const Vec3& axis, double radius,
+                                  double height) {
+  return std::make_unique<Cylinder>(center, axis, radius, height);
 }
 RegionPtr<2> make_polygon(std::vector<Vec2> vertices) {
   return std::make_unique<Polygon>(std::move(vertices));

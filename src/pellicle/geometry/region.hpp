@@ -38,6 +38,9 @@ RegionPtr<D> make_ellipsoid(const Vec<D>& center, const Vec<D>& semi_axes);
 //! Half-space (x − p) · n ≤ 0: the side the outward normal n points away from.
 template <int D>
 RegionPtr<D> make_half_space(const Vec<D>& point, const Vec<D>& outward_normal);
+//! Solid cylinder (3D): |(x − c)·a| ≤ height/2 and distance from the axis ≤ radius.
+RegionPtr<3> make_cylinder_region(const Vec3& center, const Vec3& axis, double radius,
+                                  double height);
 //! Simple polygon (2D), vertices in either order; even–odd rule.
 RegionPtr<2> make_polygon(std::vector<Vec2> vertices);
 //! Inside any of the parts.

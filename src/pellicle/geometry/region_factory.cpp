@@ -40,6 +40,18 @@ RegionPtr<D> read_polygon(ParameterReader& in) {
   }
 }
 template <int D>
+RegionPtr<D> read_cylinder(ParameterReader& in) {
+  if constexpr (D == 3) {
+    const Vec3 c = read_vector<3>(in, "center"), axis = read_vector<3>(in, "axis");
+    if (axis.norm() == 0.0) in.fail("axis", "expected a non-zero vector");
+    const double r = in.number("radius", NumberRange::positive());
+    const double h = in.number("height", NumberRange::positive());
+    return make_cylinder_region(c, axis.norm() > 0 ? axis : Vec3::UnitZ(), r, h);
+  } else {
+    return nullptr;  // not registered in 2D
+  }
+}
+template <int D>
 std::vector<RegionPtr<D>> read_parts(ParameterReader& in, std::size_t at_least) {
   std::vector<RegionPtr<D>> parts;
   for (auto& t : in.tables("parts")) parts.push_back(make_region<D>(*t));
@@ -77,6 +89,7 @@ const std::vector<Shape<D>>& shapes() {
       {"sphere", 3, &read_ball<D>},
       {"ellipse", 2, &read_ellipsoid<D>},
       {"ellipsoid", 3, &read_ellipsoid<D>},
+      {"cylinder", 3, &read_cylinder<D>},
       {"half-space", 0, &read_half_space<D>},
       {"polygon", 2, &read_polygon<D>},
       {"union", 0, &read_union<D>},

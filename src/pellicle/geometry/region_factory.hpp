@@ -8,6 +8,7 @@
 //!   shape = "sphere"        center, radius          (3D)
 //!   shape = "ellipse"       center, semi_axes       (2D)
 //!   shape = "ellipsoid"     center, semi_axes       (3D)
+//!   shape = "cylinder"      center, axis, radius, height  (3D, solid)
 //!   shape = "half-space"    point, normal           (inside: (x − point)·normal ≤ 0)
 //!   shape = "polygon"       vertices = [[x, y], …]  (2D)
 //!   shape = "union" | "intersection" | "difference"   parts = [ {region}, … ]

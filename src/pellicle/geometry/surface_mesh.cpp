@@ -121,7 +121,8 @@ SurfaceMesh make_disk(const Vec3& center, const Vec3& axis, double radius, doubl
   std::vector<int> previous{0};
   for (int r = 1; r <= rings; ++r) {
     const double rho = radius * r / rings;
-    const int n = std::max(6, static_cast<int>(std::lround(2.0 * std::numbers::pi * rho / spacing)));
+    const int n =
+        std::max(6, static_cast<int>(std::lround(2.0 * std::numbers::pi * rho / spacing)));
     std::vector<int> ring;
     for (int k = 0; k < n; ++k) {
       const double phi = 2.0 * std::numbers::pi * k / n;
@@ -151,12 +152,13 @@ SurfaceMesh make_ellipsoid(const Vec3& center, const Vec3& semi_axes, double spa
   // edges are short enough.
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
   SurfaceMesh m;
-  m.vertices = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  m.vertices = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   for (auto& v : m.vertices) v.normalize();
-  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                 {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   const double stretch = semi_axes.maxCoeff();
   refine(m, spacing / stretch, [](const Vec3& x) { return Vec3(x.normalized()); });
   for (auto& v : m.vertices) v = center + v.cwiseProduct(semi_axes);

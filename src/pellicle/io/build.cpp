@@ -30,8 +30,7 @@ std::vector<std::pair<Vec<D>, double>> body_points(const Case<D>& c, const BodyS
       out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
     }
   } else {
-    for (const auto& x :
-         fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell))
+    for (const auto& x : fill_region<D>(*b.region, c.lower, c.upper, c.cell, b.points_per_cell))
       out.emplace_back(x, point_volume<D>(c.cell, b.points_per_cell, c.settings.kinematics, x));
   }
   return out;
@@ -72,16 +71,26 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
         problems.push_back({b.where, "body.point_masses",
                             "body '" + b.name + "': no point " + std::to_string(index) +
                                 " (it has " + std::to_string(positions.size()) + ")"});
-    points.bodies.push_back({b.name, b.material, Vec<D>::Zero(), points.size(), points.size(),
-                             frame_estimator(b)});
+    points.bodies.push_back(
+        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frame_estimator(b)});
     const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
     const Sym<D> stress =
         b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);
     double body_mass = 0.0;
     Vec<D> first_moment = Vec<D>::Zero();
-    for (const auto& [x, volume] : positions) {
+    const long last = b.initial_points.second < 0 ? static_cast<long>(positions.size()) - 1
+                                                  : b.initial_points.second;
+    if (last >= static_cast<long>(positions.size()))
+      problems.push_back({b.where, "body.initial_strain.points",
+                          "body '" + b.name + "': no point " + std::to_string(last) + " (it has " +
+                              std::to_string(positions.size()) + ")"});
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      const auto& [x, volume] = positions[i];
       const double m = material.density() * volume;
-      points.add(x, b.velocity, m, material.density(), stress, strain);
+      const long index = static_cast<long>(i);
+      const bool initial = index >= b.initial_points.first && index <= last;
+      points.add(x, b.velocity, m, material.density(), initial ? stress : Sym<D>::Zero(),
+                 initial ? strain : Sym<D>::Zero());
     }
     auto& body = points.bodies.back();
     // Point masses given explicitly (an end mass on a string) keep their point's volume.

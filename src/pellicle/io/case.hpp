@@ -11,6 +11,7 @@
 #include "pellicle/core/types.hpp"
 #include "pellicle/geometry/membrane_geometry.hpp"
 #include "pellicle/geometry/region.hpp"
+#include "pellicle/io/probes.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/simulation.hpp"
@@ -37,6 +38,9 @@ struct BodySpec {
   std::optional<Vec<D>> center;            //!< c; default: the body's centre of mass
   Vec<D> external_force = Vec<D>::Zero();  //!< total, spread over the body by mass
   std::optional<Sym<D>> initial_stress, initial_strain;
+  //! Points (first, last; indices within the body) that take the initial stress or strain;
+  //! default all (the slack of IJNME §3.2 is strain on points 4–9 of a string only).
+  std::pair<long, long> initial_points{0, -1};
   RegionPtr<D> region;  //!< solids: the region the points fill
   //! Membranes: the sampled curve or surface, its thickness and frame estimator.
   std::optional<MembraneGeometry<D>> membrane;
@@ -60,6 +64,7 @@ struct Case {
   std::vector<std::string> material_names;
   std::vector<std::unique_ptr<Material<D>>> materials;
   std::vector<BodySpec<D>> bodies;
+  std::vector<ProbeSpec<D>> probes;
 };
 
 //! A parsed case file whose dimension is known, before typing (see read_case).

@@ -287,12 +287,12 @@ void read_membrane_or_region(TomlParameters& t, Case<D>& c, BodySpec<D>& b) {
   } else {
     b.region = make_region<D>(*t.sub_table("region", true));
   }
-  const Material<D>* material = b.material < static_cast<int>(c.materials.size())
-                                    ? c.materials[b.material].get()
-                                    : nullptr;
+  const Material<D>* material =
+      b.material < static_cast<int>(c.materials.size()) ? c.materials[b.material].get() : nullptr;
   if (material && material->is_membrane() != membrane)
-    t.fail("material", membrane ? "expected a material with model = \"membrane\" for a membrane body"
-                                : "expected a solid material: model \"membrane\" needs a membrane body");
+    t.fail("material", membrane
+                           ? "expected a material with model = \"membrane\" for a membrane body"
+                           : "expected a solid material: model \"membrane\" needs a membrane body");
 }
 
 template <int D>
@@ -310,7 +310,8 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
       t->fail("material", "expected the name of a [[material]], found \"" + material + "\"");
     b.material = it == c.material_names.end() ? 0 : static_cast<int>(it - c.material_names.begin());
     read_membrane_or_region(*t, c, b);
-    if (!b.membrane) b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
+    if (!b.membrane)
+      b.points_per_cell = static_cast<int>(t->integer_or("points_per_cell", 2, 1, 16));
     b.velocity = read_vector_or<D>(*t, "velocity", Vec<D>::Zero());
     if constexpr (D == 2) {
       b.angular_velocity.z() = t->number_or("angular_velocity", 0.0, NumberRange::any());
@@ -330,7 +331,8 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     if (t->has("point_masses")) {
       for (const auto& entry : t->number_lists("point_masses", 2)) {
         if (entry[0] < 0 || entry[0] != std::floor(entry[0]) || !(entry[1] > 0))
-          t->fail("point_masses", "expected [[index, mass], …] with whole indices >= 0 and masses > 0");
+          t->fail("point_masses",
+                  "expected [[index, mass], …] with whole indices >= 0 and masses > 0");
         else
           b.point_masses.emplace_back(static_cast<long>(entry[0]), entry[1]);
       }
@@ -339,11 +341,53 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
       t->fail("initial_stress", "membranes take initial_strain (their stress follows from it)");
     if (t->has("initial_stress") && t->has("initial_strain"))
       t->fail("initial_strain", "give either initial_stress or initial_strain, not both");
-    if (t->has("initial_stress"))
-      b.initial_stress = read_tensor<D>(*t->sub_table("initial_stress", true));
-    if (t->has("initial_strain"))
-      b.initial_strain = read_tensor<D>(*t->sub_table("initial_strain", true));
+    for (const char* key : {"initial_stress", "initial_strain"}) {
+      if (!t->has(key)) continue;
+      auto table = t->sub_table(key, true);
+      (std::string(key) == "initial_stress" ? b.initial_stress : b.initial_strain) =
+          read_tensor<D>(*table);
+      if (table->has("points")) {
+        const auto range = table->numbers("points", 2, NumberRange::non_negative());
+        if (range[1] < range[0] || range[0] != std::floor(range[0]) ||
+            range[1] != std::floor(range[1]))
+          table->fail("points", "expected [first, last]: whole point indices, first <= last");
+        b.initial_points = {static_cast<long>(range[0]), static_cast<long>(range[1])};
+      }
+    }
     c.bodies.push_back(std::move(b));
+  }
+}
+
+template <int D>
+void read_probes(TomlParameters& root, Case<D>& c) {
+  if (!root.has("probe")) return;
+  for (auto& t : root.sub_tables("probe")) {
+    ProbeSpec<D> p;
+    p.where = t->location();
+    p.name = t->text("name");
+    p.body = t->text("body");
+    if (std::none_of(c.bodies.begin(), c.bodies.end(),
+                     [&](const auto& b) { return b.name == p.body; }))
+      t->fail("body", "expected the name of a [[body]], found \"" + p.body + "\"");
+    const std::string q = t->choice("quantity", {"position", "velocity", "angle"});
+    auto index = [&](double v, const char* key) {
+      if (v < 0 || v != std::floor(v)) t->fail(key, "expected whole point indices >= 0");
+      return static_cast<long>(std::max(0.0, v));
+    };
+    if (q == "angle") {
+      p.quantity = ProbeQuantity::angle;
+      const auto ab = t->numbers("points", 2, NumberRange::non_negative());
+      p.a = index(ab[0], "points");
+      p.b = index(ab[1], "points");
+      Vec<D> down = Vec<D>::Zero();
+      down[D - 1] = -1.0;
+      p.reference = read_vector_or<D>(*t, "reference", down);
+      if (p.reference.norm() == 0.0) t->fail("reference", "expected a non-zero vector");
+    } else if (!q.empty()) {
+      p.quantity = q == "position" ? ProbeQuantity::position : ProbeQuantity::velocity;
+      p.a = p.b = index(t->number("point", NumberRange::non_negative()), "point");
+    }
+    c.probes.push_back(p);
   }
 }
 
@@ -368,6 +412,7 @@ Case<D> read_case(const CaseSource& source) {
     read_output(root, c);
     read_materials(root, c);
     read_bodies(root, c);
+    read_probes(root, c);
   }  // unknown keys are reported as the readers go out of scope
   problems.throw_if_any();
   return c;

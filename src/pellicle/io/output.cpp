@@ -59,8 +59,10 @@ std::string hash_text(const std::string& text) {
 }
 
 template <int D>
-OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation)
+OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation,
+                              std::vector<Probe<D>> probes)
     : settings_(settings),
+      probes_(std::move(probes)),
       points_series_(settings.directory + "/points.pvd"),
       grid_series_(settings.directory + "/grid.pvd") {
   std::error_code ec;
@@ -74,6 +76,8 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
     for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".com_" << axis_names[d];
     for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".vel_" << axis_names[d];
   }
+  for (const auto& probe : probes_)
+    for (const auto& column : probe.columns()) history_ << ',' << column;
   history_ << '\n' << std::setprecision(12);
   write_history_row(simulation);
   write_snapshot(simulation);
@@ -94,6 +98,8 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     for (int d = 0; d < D; ++d) history_ << ',' << com[d];
     for (int d = 0; d < D; ++d) history_ << ',' << vel[d];
   }
+  for (const auto& probe : probes_)
+    for (double v : probe.values(simulation)) history_ << ',' << v;
   history_ << '\n';
   history_.flush();
   if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "pellicle/io/case.hpp"
+#include "pellicle/io/probes.hpp"
 #include "pellicle/io/vtk_writer.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
@@ -21,7 +22,8 @@ template <int D>
 class OutputWriter final : public StepObserver<D> {
  public:
   //! Creates the directory, writes the history header, the t = 0 row and snapshot.
-  OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation);
+  OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation,
+               std::vector<Probe<D>> probes = {});
 
   void after_step(const Simulation<D>& simulation) override;
   //! Final row and snapshot (if not just written) and summary.json. `status` is "completed"
@@ -36,6 +38,7 @@ class OutputWriter final : public StepObserver<D> {
   void write_snapshot(const Simulation<D>& simulation);
 
   OutputSettings settings_;
+  std::vector<Probe<D>> probes_;
   std::ofstream history_;
   PvdCollection points_series_, grid_series_;
   double next_history_ = 0.0, next_snapshot_ = 0.0;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "pellicle/io/atomic_file.hpp"
+#include "pellicle/mpm/materials/membrane.hpp"
 
 namespace pellicle {
 namespace {
@@ -65,6 +66,37 @@ std::vector<double> as_paraview_tensor(const std::vector<Sym<D>>& s) {
   return out;
 }
 
+template <int D>
+bool has_membranes(const Simulation<D>& s) {
+  for (const auto& b : s.points().bodies)
+    if (b.frames) return true;
+  return false;
+}
+
+//! Membrane points: frame, and strain and stress in the local axes (11 tangent, 22 second
+//! in-surface direction, 12 in-surface shear); zero for other points.
+template <int D>
+void write_membrane_fields(std::string& out, const Simulation<D>& s) {
+  const Particles<D>& p = s.points();
+  const std::size_t n = p.position.size();
+  std::vector<double> strain(3 * n, 0.0), stress(3 * n, 0.0);
+  for (const auto& b : p.bodies) {
+    if (!b.frames) continue;
+    for (long i = b.begin; i < b.end; ++i) {
+      const Mat3 Q = membrane_axes(p.tangent[i], p.normal[i]);
+      const Mat3 e = Q * to_mat3<D>(p.strain[i]) * Q.transpose();
+      const Mat3 t = Q * to_mat3<D>(p.stress[i]) * Q.transpose();
+      const double le[3] = {e(0, 0), e(1, 1), e(0, 1)}, lt[3] = {t(0, 0), t(1, 1), t(0, 1)};
+      std::copy(le, le + 3, strain.begin() + 3 * i);
+      std::copy(lt, lt + 3, stress.begin() + 3 * i);
+    }
+  }
+  data_array(out, "Float64", "normal", 3, as_xyz<D>(p.normal));
+  data_array(out, "Float64", "tangent", 3, as_xyz<D>(p.tangent));
+  data_array(out, "Float64", "membrane_strain", 3, strain);
+  data_array(out, "Float64", "membrane_stress", 3, stress);
+}
+
 }  // namespace
 
 template <int D>
@@ -108,6 +140,7 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
   data_array(out, "Float64", "pressure", 1, pressure);
   data_array(out, "Float64", "von_mises", 1, von_mises);
   data_array(out, "Int32", "body", 1, body);
+  if (has_membranes(simulation)) write_membrane_fields(out, simulation);
   out += "</PointData>\n<Cells>\n";
   data_array(out, "Int32", "connectivity", 1, connectivity);
   data_array(out, "Int32", "offsets", 1, offsets);

@@ -104,6 +104,10 @@ void Grid<D>::integrate(double dt) {
       velocity[n].setZero();
     }
   }
+  for (const auto& [n, v] : prescribed_) {
+    velocity_change[n] = v - (mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : v);
+    velocity[n] = v;
+  }
   mirror(velocity);
   mirror(velocity_change);
 }
@@ -114,6 +118,7 @@ void Grid<D>::velocities_from_momentum() {
 #pragma omp parallel for schedule(static)
   for (long n = 0; n < node_count_; ++n)
     velocity[n] = mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : Vec<D>::Zero();
+  for (const auto& [n, v] : prescribed_) velocity[n] = v;
   mirror(velocity);
 }
 

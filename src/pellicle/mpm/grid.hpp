@@ -80,6 +80,10 @@ class Grid {
   //! Set ghost-node values beyond constrained faces from their images: v_ghost = R v_image.
   void mirror(std::vector<Vec<D>>& field) const;
 
+  //! Nodes that take a prescribed velocity (touched by rigid bodies), set every step before
+  //! the grid solve and applied by integrate() and velocities_from_momentum().
+  void prescribe(std::vector<std::pair<long, Vec<D>>> nodes) { prescribed_ = std::move(nodes); }
+
   //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
   void constrain(std::vector<Vec<D>>& field) const {
     for (const auto& c : constraints_)
@@ -117,6 +121,7 @@ class Grid {
   FaceConditions<D> faces_;
   std::vector<Constraint> constraints_;
   std::vector<Mirror> mirrors_;  //!< in axis order; mirror() walks them backwards
+  std::vector<std::pair<long, Vec<D>>> prescribed_;
 };
 
 extern template class Grid<2>;

@@ -23,6 +23,12 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   for (const auto& v : points_.velocity) max_speed_ = std::max(max_speed_, v.norm());
   if (points_.affine.size() != points_.position.size())
     points_.affine.assign(points_.position.size(), Mat<D>::Zero());
+  rigid_velocity_.assign(points_.bodies.size(), Vec<D>::Zero());
+  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
+    if (!materials_[points_.bodies[b].material]->is_rigid()) continue;
+    has_rigid_bodies_ = true;
+    rigid_velocity_[b] = points_.velocity[points_.bodies[b].begin];
+  }
   // Membrane stresses follow from their strains in their frames: settle them once before
   // the first step (a zero step changes nothing else).
   update_frames();
@@ -30,14 +36,39 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   if (settings_.kinematics == Kinematics::axisymmetric) hoop_rate_.assign(points_.size(), 0.0);
   for (const auto& body : points_.bodies)
     if (materials_[body.material]->is_membrane())
-      materials_[body.material]->update({points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end});
+      materials_[body.material]->update(
+          {points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end});
+}
+
+template <int D>
+void Simulation<D>::prescribe_rigid_nodes() {
+  std::vector<std::pair<long, Vec<D>>> prescribed;
+  std::vector<long> nodes;
+  for (const auto& body : points_.bodies) {
+    if (!materials_[body.material]->is_rigid()) continue;
+    nodes.clear();
+    transfer_->touched_nodes(grid_, body.begin, body.end, nodes);
+    for (long n : nodes) prescribed.emplace_back(n, points_.velocity[body.begin]);
+  }
+  grid_.prescribe(std::move(prescribed));
+}
+
+template <int D>
+void Simulation<D>::restore_rigid_velocities() {
+  // Rigid points keep their prescribed velocity exactly (FLIP would add the nodes' change).
+  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
+    const auto& body = points_.bodies[b];
+    if (!materials_[body.material]->is_rigid()) continue;
+    for (long p = body.begin; p < body.end; ++p) points_.velocity[p] = rigid_velocity_[b];
+  }
 }
 
 template <int D>
 void Simulation<D>::update_frames() {
   for (const auto& body : points_.bodies)
     if (body.frames)
-      body.frames->estimate(points_.position, body.begin, body.end, points_.normal, points_.tangent);
+      body.frames->estimate(points_.position, body.begin, body.end, points_.normal,
+                            points_.tangent);
 }
 
 template <int D>
@@ -52,6 +83,7 @@ void Simulation<D>::step() {
     fail(fastest_point(), what.str());
   }
   transfer_->compute_stencils(points_, grid_);  // stencils
+  if (has_rigid_bodies_) prescribe_rigid_nodes();
   if (settings_.scheme == UpdateScheme::usf) {  // to_grid (USF: stress first)
     transfer_->to_grid(points_, gravity_, grid_, false);
     grid_.velocities_from_momentum();
@@ -64,6 +96,7 @@ void Simulation<D>::step() {
   PointFailure failure;  // to_points
   max_speed_ = transfer_->to_points(grid_, dt, points_, failure);
   if (failure.point >= 0) fail(failure.point, failure.what);
+  if (has_rigid_bodies_) restore_rigid_velocities();
   if (settings_.scheme == UpdateScheme::musl) transfer_->remap(points_, grid_);  // remap
   if (settings_.scheme != UpdateScheme::usf) update_materials(dt);               // materials
   time_ += dt;

@@ -91,6 +91,8 @@ class Simulation {
  private:
   void update_materials(double dt);
   void update_frames();
+  void prescribe_rigid_nodes();
+  void restore_rigid_velocities();
   double time_step(double signal_speed) const;
   long fastest_point() const;  //!< point with the largest c + |v| (for CFL failures)
   [[noreturn]] void fail(long point, const std::string& what) const;
@@ -103,6 +105,8 @@ class Simulation {
   Vec<D> gravity_;
   std::vector<StepObserver<D>*> observers_;
 
+  bool has_rigid_bodies_ = false;
+  std::vector<Vec<D>> rigid_velocity_;  //!< per body: the prescribed velocity of rigid ones
   std::vector<Mat<D>> velocity_gradient_;
   std::vector<double> hoop_rate_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;

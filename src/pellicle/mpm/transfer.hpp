@@ -67,6 +67,10 @@ class Transfer {
   virtual double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
                            PointFailure& failure) = 0;
 
+  //! Grid nodes the points [begin, end) touch (N_i > 0), each listed once, appended to `nodes`.
+  virtual void touched_nodes(const Grid<D>& grid, long begin, long end,
+                             std::vector<long>& nodes) const = 0;
+
   //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
   virtual void remap(const Particles<D>& points, Grid<D>& grid) = 0;
 

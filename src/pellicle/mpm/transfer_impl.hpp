@@ -128,6 +128,18 @@ class TransferImpl final : public Transfer<D> {
     return max_speed;
   }
 
+  void touched_nodes(const Grid<D>& grid, long begin, long end,
+                     std::vector<long>& nodes) const override {
+    const std::size_t first = nodes.size();
+    for (long p = begin; p < end; ++p)
+      for_each_node(stencils_[p], grid.strides(),
+                    [&](long node, double N, const Vec<D>&, const IVec<D>&) {
+                      if (N > 0.0) nodes.push_back(node);
+                    });
+    std::sort(nodes.begin() + first, nodes.end());
+    nodes.erase(std::unique(nodes.begin() + first, nodes.end()), nodes.end());
+  }
+
   void remap(const Particles<D>& points, Grid<D>& grid) override {
     zero(grid.momentum);
     if (apic())

@@ -52,5 +52,9 @@ Outcome bar_vibration(Resolution resolution);
 Outcome cylinder_radial_vibration(Resolution resolution);
 Outcome two_disks(Resolution resolution);
 Outcome two_bars_stick(Resolution resolution);
+Outcome pendulum(Resolution resolution);
+Outcome spring_mass(Resolution resolution);
+Outcome string_slack(Resolution resolution);
+Outcome drum(Resolution resolution);
 
 }  // namespace pellicle::validation

@@ -15,6 +15,14 @@ const std::vector<Problem>& problems() {
        &two_disks},
       {"two-bars-stick", "Two-bar impact, single velocity field: the bars stick",
        "IJNME 1999 §4.1 Fig. 18; thesis A.1.2", &two_bars_stick},
+      {"spring-mass", "Spring–mass oscillator; stability at 1.6 and 1.7 Δt_crit",
+       "IJNME 1999 §3.1.1; thesis §5.5", &spring_mass},
+      {"string-slack", "String with slack, one-way law: free fall, tension, free flight",
+       "IJNME 1999 §3.2; thesis §5.6", &string_slack},
+      {"pendulum", "Pendulum: string with end mass against bar elements, four grids",
+       "IJNME 1999 §3.1.2; thesis §5.7", &pendulum},
+      {"drum", "Pre-tensioned circular drum (3D membrane): fundamental frequency",
+       "thesis §5.8; classical membrane theory", &drum},
   };
   return list;
 }

@@ -43,6 +43,8 @@ class Material {
   virtual double density() const = 0;
   //! Membrane models need a body of membrane points with frames; solids fill regions.
   virtual bool is_membrane() const { return false; }
+  //! Rigid bodies move with a prescribed velocity and impose it on the grid nodes they touch.
+  virtual bool is_rigid() const { return false; }
 
   Kinematics kinematics() const { return kinematics_; }
 

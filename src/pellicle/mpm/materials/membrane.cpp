@@ -57,21 +57,19 @@ void Membrane<D>::local_stress(double e11, double& e22, double e12, double& s11,
   s12 = E * e1 * 0.5 * sin2;
 }
 
-namespace {
-//! Rows: the local axes 1' (tangent), 2' (second in-surface direction), 3' (normal).
-inline Mat3 local_axes(const Vec2& t, const Vec2& n) {
+Mat3 membrane_axes(const Vec2& t, const Vec2& n) {
   Mat3 Q;
   Q << t.x(), t.y(), 0.0, 0.0, 0.0, 1.0, n.x(), n.y(), 0.0;
   return Q;
 }
-inline Mat3 local_axes(const Vec3& t, const Vec3& n) {
+
+Mat3 membrane_axes(const Vec3& t, const Vec3& n) {
   Mat3 Q;
   Q.row(0) = t.transpose();
   Q.row(1) = n.cross(t).transpose();
   Q.row(2) = n.transpose();
   return Q;
 }
-}  // namespace
 
 template <int D>
 void Membrane<D>::update(const MaterialStep<D>& step) const {
@@ -82,7 +80,7 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
   for (long p = step.begin; p < step.end; ++p) {
     const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
-    const Mat3 Q = local_axes(pts.tangent[p], pts.normal[p]);
+    const Mat3 Q = membrane_axes(pts.tangent[p], pts.normal[p]);
     const Mat3 local = Q * to_mat3<D>(pts.strain[p] + de) * Q.transpose();  // thesis eq 5.3
     const double e11 = local(0, 0), e12 = local(0, 1);
     double e22 = local(1, 1), s11, s22, s12;
@@ -130,8 +128,8 @@ std::unique_ptr<Material<D>> make_membrane(ParameterReader& in, Kinematics kinem
   const double rho = in.number("density", NumberRange::positive());
   const double E = in.number("youngs_modulus", NumberRange::positive());
   const double nu = in.number_or("poisson_ratio", 0.0, {-1.0, 0.5, true, true});
-  const std::string law = in.choice("law", {"uniaxial", "plane-stress"},
-                                    D == 2 ? "uniaxial" : "plane-stress");
+  const std::string law =
+      in.choice("law", {"uniaxial", "plane-stress"}, D == 2 ? "uniaxial" : "plane-stress");
   if (D == 3 && law == "uniaxial")
     in.fail("law", "expected \"plane-stress\": 3D membranes are surfaces");
   const bool one_way = in.flag_or("one_way", false);

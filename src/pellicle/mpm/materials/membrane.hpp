@@ -32,6 +32,11 @@ namespace pellicle {
 
 enum class MembraneLaw { uniaxial, plane_stress };
 
+//! Rotation to a membrane point's local axes (rows): 1' tangent, 2' second in-surface
+//! direction (2D: z, the out-of-plane or hoop direction; 3D: n × t), 3' normal.
+Mat3 membrane_axes(const Vec2& tangent, const Vec2& normal);
+Mat3 membrane_axes(const Vec3& tangent, const Vec3& normal);
+
 template <int D>
 class Membrane final : public Material<D> {
  public:

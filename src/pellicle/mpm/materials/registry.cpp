@@ -2,6 +2,7 @@
 #include "pellicle/mpm/materials/linear_elastic.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/materials/membrane.hpp"
+#include "pellicle/mpm/materials/rigid.hpp"
 
 namespace pellicle {
 
@@ -12,6 +13,8 @@ const std::vector<MaterialModel<D>>& material_models() {
        &make_linear_elastic<D>},
       {"membrane", "strings and membranes in their local frame (thesis ch. 5, IJNME §3)",
        &make_membrane<D>},
+      {"rigid", "rigid body with a prescribed constant velocity; imposes it on its nodes",
+       &make_rigid<D>},
   };
   return models;
 }
