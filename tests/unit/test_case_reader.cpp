@@ -201,5 +201,104 @@ TEST(CaseReader, BadSetIsReportedWithTheSetting) {
             "--set body[3].velocity=[0,0]: body[3].velocity: no element 3 in body");
 }
 
+const std::string kString = R"(
+[grid]
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cell = 0.1
+[solver]
+end_time = 0.1
+[[material]]
+name = "wire"
+model = "membrane"
+density = 1.0
+youngs_modulus = 1e6
+[[body]]
+name = "wire"
+material = "wire"
+membrane = { shape = "polyline", vertices = [[0.1, 0.5], [0.9, 0.5]], points = 9, thickness = 0.01 }
+)";
+
+TEST(CaseReader, ValidMembraneIsAccepted) {
+  EXPECT_EQ(problems_of(kString), "");
+}
+
+TEST(CaseReader, MembraneBodyNeedsAMembraneMaterial) {
+  const std::string msg =
+      problems_of(replace(kString, "model = \"membrane\"", "model = \"linear-elastic\""));
+  EXPECT_NE(
+      msg.find(
+          "body[0].material: expected a material with model = \"membrane\" for a membrane body"),
+      std::string::npos)
+      << msg;
+  EXPECT_NE(problems_of(kValid, {"material[0].model=membrane"})
+                .find("expected a solid material: model \"membrane\" needs a membrane body"),
+            std::string::npos);
+}
+
+TEST(CaseReader, MembraneKeysAreChecked) {
+  std::string msg = problems_of(replace(kString, ", thickness = 0.01", ""));
+  EXPECT_NE(msg.find("body[0].membrane.thickness: expected a number > 0, found nothing (required)"),
+            std::string::npos)
+      << msg;
+  msg = problems_of(replace(kString, "points = 9", "points = 9, spacing = 0.05"));
+  EXPECT_NE(msg.find("body[0].membrane.spacing: give either points or spacing"), std::string::npos)
+      << msg;
+  msg = problems_of(replace(kString, "shape = \"polyline\"", "shape = \"line\""));
+  EXPECT_NE(msg.find("body[0].membrane.shape: expected one of \"polyline\", \"circle\", "
+                     "\"ellipse\" or \"spline\""),
+            std::string::npos)
+      << msg;
+  msg = problems_of(replace(kString, "[0.9, 0.5]", "[1.9, 0.5]"));
+  EXPECT_NE(msg.find("body 'wire': membrane points lie outside the grid"), std::string::npos)
+      << msg;
+}
+
+TEST(CaseReader, PointMassesAndInitialStrainRangesMustExist) {
+  std::string msg = problems_of(kString, {"body[0].point_masses=[[9, 3.3]]"});
+  EXPECT_NE(msg.find("body 'wire': no point 9 (it has 9)"), std::string::npos) << msg;
+  EXPECT_EQ(problems_of(kString, {"body[0].point_masses=[[8, 3.3]]"}), "");
+  msg = problems_of(kString, {"body[0].initial_strain={xx=0.01, points=[2, 12]}"});
+  EXPECT_NE(msg.find("body 'wire': no point 12 (it has 9)"), std::string::npos) << msg;
+  msg = problems_of(kString, {"body[0].initial_stress={xx=1.0}"});
+  EXPECT_NE(msg.find("body[0].initial_stress: membranes take initial_strain"), std::string::npos)
+      << msg;
+}
+
+TEST(CaseReader, MeshFileMustBeReadable) {
+  const std::string msg = problems_of(R"(
+[grid]
+lower = [0.0, 0.0, 0.0]
+upper = [1.0, 1.0, 1.0]
+cell = 0.1
+[solver]
+end_time = 0.1
+[[material]]
+name = "skin"
+model = "membrane"
+density = 1.0
+youngs_modulus = 1e6
+[[body]]
+name = "skin"
+material = "skin"
+membrane = { shape = "mesh", file = "no_such_file.stl", thickness = 0.01 }
+)");
+  EXPECT_NE(msg.find("body[0].membrane.file: ./no_such_file.stl: cannot open the STL file"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(CaseReader, ProbesNameRealBodiesAndPoints) {
+  std::string msg = problems_of(
+      kString + "[[probe]]\nname = \"p\"\nbody = \"rope\"\npoint = 0\nquantity = \"position\"\n");
+  EXPECT_NE(msg.find("probe[0].body: expected the name of a [[body]], found \"rope\""),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kString + "[[probe]]\nname = \"p\"\nbody = \"wire\"\nquantity = \"speed\"\n");
+  EXPECT_NE(msg.find("probe[0].quantity: expected one of \"position\", \"velocity\" or \"angle\""),
+            std::string::npos)
+      << msg;
+}
+
 }  // namespace
 }  // namespace pellicle
