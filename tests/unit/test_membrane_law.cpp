@@ -65,6 +65,20 @@ TEST(MembraneLaw, PlaneStressMembraneIn2DKeepsOutOfPlaneStress) {
   EXPECT_NEAR(p.strain[0][1], -nu / (1 - nu) * e, 1e-15);  // ε3' (eq 5.12)
 }
 
+TEST(MembraneLaw, AxisymmetricMembraneFeelsTheHoopStrain) {
+  // An axisymmetric membrane (an airbag's wall): the hoop direction is its second in-surface
+  // direction, strained by v_r/r; a radial expansion with no meridional stretch gives
+  // σθθ = E e/(1 − ν²) and σ along the meridian ν times that.
+  const Membrane<2> m(Kinematics::axisymmetric, 1.0, E, nu, MembraneLaw::plane_stress, false);
+  Particles<2> p = one_point<2>(Vec2(0, 1), Vec2(1, 0), Sym<2>::Zero());  // meridian along z
+  const std::vector<Mat<2>> gradient{Mat<2>::Zero()};
+  const std::vector<double> hoop{1e-3};
+  m.update(MaterialStep<2>{p, gradient, hoop, 1.0, 0, 1});
+  EXPECT_NEAR(p.stress[0][2], E * 1e-3 / (1 - nu * nu), 1e-6);
+  EXPECT_NEAR(p.stress[0][1], nu * E * 1e-3 / (1 - nu * nu), 1e-6);
+  EXPECT_NEAR(p.stress[0][0], 0.0, 1e-9);  // nothing through the thickness (radial here)
+}
+
 TEST(MembraneLaw, PlaneStressIn3DHasInPlaneShear) {
   const Membrane<3> m(Kinematics::solid, 1.0, E, nu, MembraneLaw::plane_stress, false);
   Sym<3> strain = Sym<3>::Zero();
