@@ -8,6 +8,7 @@
 //   string-slack     IJNME §3.2: free fall, tension and free-flight times within 10%
 //   pendulum         IJNME §3.1.2: θ(t) against bar elements, error falling with refinement
 //   drum             3D membrane: fundamental period within 3%, error falling with refinement
+//   sphere-breathing 3D curved membrane: breathing period within 2%
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -51,6 +52,9 @@ TEST(Validation, Pendulum) {
 }
 TEST(Validation, Drum) {
   expect_all_checks_pass("drum");
+}
+TEST(Validation, SphereBreathing) {
+  expect_all_checks_pass("sphere-breathing");
 }
 
 TEST(Validation, EveryProblemHasAName) {

@@ -56,5 +56,6 @@ Outcome pendulum(Resolution resolution);
 Outcome spring_mass(Resolution resolution);
 Outcome string_slack(Resolution resolution);
 Outcome drum(Resolution resolution);
+Outcome sphere_breathing(Resolution resolution);
 
 }  // namespace pellicle::validation

@@ -23,6 +23,8 @@ const std::vector<Problem>& problems() {
        "IJNME 1999 §3.1.2; thesis §5.7", &pendulum},
       {"drum", "Pre-tensioned circular drum (3D membrane): fundamental frequency",
        "thesis §5.8; classical membrane theory", &drum},
+      {"sphere-breathing", "Spherical membrane, breathing mode (3D curved membrane)",
+       "thesis §5.8; membrane-shell theory", &sphere_breathing},
   };
   return list;
 }

@@ -1,8 +1,12 @@
 #pragma once
 //! Point kinematics shared by the constitutive models: strain increment and the Jaumann
-//! rotation of a stress over one step (IJNME 1999 eqs 12–15).
+//! rotation of a stress over one step (IJNME 1999 eqs 12–15), and the density that sets the
+//! wave speed.
+
+#include <algorithm>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/mpm/particles.hpp"
 
 namespace pellicle {
 
@@ -34,6 +38,16 @@ inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
     const Mat3 S = to_mat3<D>(s);
     return s + from_mat3<D>(W * S - S * W);
   }
+}
+
+//! Smallest current density of points [begin, end), and at most `reference`: the fastest
+//! elastic wave, sqrt(M/ρ), is where the material is least dense.
+template <int D>
+inline double smallest_density(const Particles<D>& points, long begin, long end, double reference) {
+  double smallest = reference;
+#pragma omp parallel for reduction(min : smallest) schedule(static)
+  for (long p = begin; p < end; ++p) smallest = std::min(smallest, points.density[p]);
+  return smallest;
 }
 
 }  // namespace pellicle

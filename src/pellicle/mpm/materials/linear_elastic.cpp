@@ -56,10 +56,7 @@ void LinearElastic<D>::update(const MaterialStep<D>& step) const {
 
 template <int D>
 double LinearElastic<D>::max_wave_speed(const Particles<D>& points, long begin, long end) const {
-  double min_density = density_;
-#pragma omp parallel for reduction(min : min_density) schedule(static)
-  for (long p = begin; p < end; ++p) min_density = std::min(min_density, points.density[p]);
-  return std::sqrt(wave_modulus() / min_density);
+  return std::sqrt(wave_modulus() / smallest_density(points, begin, end, density_));
 }
 
 template <int D>

@@ -101,11 +101,7 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
 
 template <int D>
 double Membrane<D>::max_wave_speed(const Particles<D>& points, long begin, long end) const {
-  // The smallest density gives the fastest wave (heavy end masses are slower).
-  double min_density = density_;
-#pragma omp parallel for reduction(min : min_density) schedule(static)
-  for (long p = begin; p < end; ++p) min_density = std::min(min_density, points.density[p]);
-  return std::sqrt(wave_modulus() / min_density);
+  return std::sqrt(wave_modulus() / smallest_density(points, begin, end, density_));
 }
 
 template <int D>
