@@ -130,9 +130,9 @@ TEST(Frames, CurveTangentsFollowTheCircle) {
   // Thesis eq 7.1 on a closed circle: tangents along x_{p+1} − x_{p−1} are exact in
   // direction by symmetry; normals are the tangents turned +90°.
   const SampledCurve c = sample_ellipse_arc(Vec2::Zero(), Vec2::Ones(), 0.0, 2 * pi, {0.0, 64});
-  MembraneConnectivity connectivity;
-  connectivity.closed_curve = true;
-  auto estimator = make_connectivity_estimator<2>(connectivity);
+  FrameSetup<2> setup;
+  setup.connectivity.closed_curve = true;
+  auto estimator = make_connectivity_estimator<2>(setup);
   std::vector<Vec2> normal(c.points.size()), tangent(c.points.size());
   estimator->estimate(c.points, 0, static_cast<long>(c.points.size()), normal, tangent);
   for (std::size_t i = 0; i < c.points.size(); ++i) {
@@ -143,9 +143,9 @@ TEST(Frames, CurveTangentsFollowTheCircle) {
 
 TEST(Frames, MeshNormalsOfASphereAreRadial) {
   const SurfaceMesh m = make_ellipsoid(Vec3::Zero(), Vec3::Ones(), 0.1);
-  MembraneConnectivity connectivity;
-  connectivity.triangles = m.triangles;
-  auto estimator = make_connectivity_estimator<3>(connectivity);
+  FrameSetup<3> setup;
+  setup.connectivity.triangles = m.triangles;
+  auto estimator = make_connectivity_estimator<3>(setup);
   std::vector<Vec3> normal(m.vertices.size()), tangent(m.vertices.size(), Vec3::Zero());
   estimator->estimate(m.vertices, 0, static_cast<long>(m.vertices.size()), normal, tangent);
   double worst = 0.0;

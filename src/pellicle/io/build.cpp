@@ -37,10 +37,15 @@ std::vector<std::pair<Vec<D>, double>> body_points(const Case<D>& c, const BodyS
 }
 
 template <int D>
-std::shared_ptr<FrameEstimator<D>> frame_estimator(const BodySpec<D>& b) {
+std::shared_ptr<FrameEstimator<D>> frame_estimator(const Case<D>& c, const BodySpec<D>& b) {
   if (!b.membrane) return nullptr;
+  FrameSetup<D> setup;
+  setup.connectivity = b.membrane->connectivity;
+  setup.grid_origin = c.lower;
+  setup.cell = c.cell;
+  setup.orientation = b.orientation;
   for (const auto& e : frame_estimators<D>())
-    if (e.name == b.frames) return e.make(b.membrane->connectivity);
+    if (e.name == b.frames) return e.make(setup);
   return nullptr;
 }
 
@@ -72,7 +77,7 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
                             "body '" + b.name + "': no point " + std::to_string(index) +
                                 " (it has " + std::to_string(positions.size()) + ")"});
     points.bodies.push_back(
-        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frame_estimator(b)});
+        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frame_estimator(c, b)});
     const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
     const Sym<D> stress =
         b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);

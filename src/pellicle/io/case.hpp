@@ -16,6 +16,7 @@
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/simulation.hpp"
 #include "pellicle/mpm/transfer.hpp"
+#include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
 
@@ -46,6 +47,7 @@ struct BodySpec {
   std::optional<MembraneGeometry<D>> membrane;
   double thickness = 0.0;
   std::string frames = "connectivity";
+  NormalOrientation orientation = NormalOrientation::propagate;
   std::vector<std::pair<long, double>> point_masses;  //!< (index in body, mass) overrides
   SourceLocation where;  //!< the body's table, for problems found when filling it
 };

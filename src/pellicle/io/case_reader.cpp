@@ -284,6 +284,8 @@ void read_membrane_or_region(TomlParameters& t, Case<D>& c, BodySpec<D>& b) {
     std::vector<std::string> estimators;
     for (const auto& e : frame_estimators<D>()) estimators.push_back(e.name);
     b.frames = m->choice("frames", estimators, "connectivity");
+    const std::string side = m->choice("orientation", {"propagate", "outward"}, "propagate");
+    b.orientation = side == "outward" ? NormalOrientation::outward : NormalOrientation::propagate;
   } else {
     b.region = make_region<D>(*t.sub_table("region", true));
   }

@@ -65,13 +65,13 @@ class MeshConnectivity final : public FrameEstimator<3> {
 }  // namespace
 
 template <>
-std::unique_ptr<FrameEstimator<2>> make_connectivity_estimator<2>(const MembraneConnectivity& c) {
-  return std::make_unique<CurveConnectivity>(c.closed_curve);
+std::unique_ptr<FrameEstimator<2>> make_connectivity_estimator<2>(const FrameSetup<2>& s) {
+  return std::make_unique<CurveConnectivity>(s.connectivity.closed_curve);
 }
 
 template <>
-std::unique_ptr<FrameEstimator<3>> make_connectivity_estimator<3>(const MembraneConnectivity& c) {
-  return std::make_unique<MeshConnectivity>(c.triangles);
+std::unique_ptr<FrameEstimator<3>> make_connectivity_estimator<3>(const FrameSetup<3>& s) {
+  return std::make_unique<MeshConnectivity>(s.connectivity.triangles);
 }
 
 }  // namespace pellicle

@@ -11,6 +11,6 @@
 namespace pellicle {
 
 template <int D>
-std::unique_ptr<FrameEstimator<D>> make_connectivity_estimator(const MembraneConnectivity& c);
+std::unique_ptr<FrameEstimator<D>> make_connectivity_estimator(const FrameSetup<D>& setup);
 
 }  // namespace pellicle

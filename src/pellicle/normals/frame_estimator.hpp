@@ -13,13 +13,32 @@
 
 namespace pellicle {
 
+//! How estimators that cannot tell inside from outside (the isosurface and colour-function
+//! methods, PCA) choose the sign of the normal the first time. Afterwards every normal keeps
+//! the side of its previous value (n · n_previous > 0).
+enum class NormalOrientation {
+  propagate,  //!< from the body's first point through neighbours, so neighbours agree
+  outward,    //!< away from the centroid of the body's points (closed curves and surfaces)
+};
+
+//! What an estimator may need to know: the generated connectivity (only `connectivity`
+//! uses it) and the background grid the local constructions live on.
+template <int D>
+struct FrameSetup {
+  MembraneConnectivity connectivity;
+  Vec<D> grid_origin = Vec<D>::Zero();  //!< position of a grid node
+  double cell = 1.0;
+  NormalOrientation orientation = NormalOrientation::propagate;
+  unsigned seed = 20000;  //!< seeds the isosurface method's extra points (reproducible)
+};
+
 template <int D>
 class FrameEstimator {
  public:
   virtual ~FrameEstimator() = default;
-  //! Frames of points [begin, end) of `position` from their current places. `tangent`
-  //! holds the previous tangents on entry (3D: kept continuous in time) and the new ones on
-  //! return.
+  //! Frames of points [begin, end) of `position` from their current places. `normal` and
+  //! `tangent` hold the previous frames on entry (zero the first time): normals keep their
+  //! side, 3D tangents are continued, so the membrane strain never sees a frame jump.
   virtual void estimate(const std::vector<Vec<D>>& position, long begin, long end,
                         std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) = 0;
 };
@@ -28,7 +47,7 @@ template <int D>
 struct FrameEstimatorChoice {
   std::string name;
   std::string summary;
-  std::unique_ptr<FrameEstimator<D>> (*make)(const MembraneConnectivity& connectivity);
+  std::unique_ptr<FrameEstimator<D>> (*make)(const FrameSetup<D>& setup);
 };
 
 //! Registered estimators (registry.cpp).
@@ -38,5 +57,14 @@ const std::vector<FrameEstimatorChoice<D>>& frame_estimators();
 //! t1 continued from the previous tangent, projected into the plane normal to n; a fixed
 //! axis when there is none yet. Keeps in-plane directions from jumping between steps.
 Vec3 continue_tangent(const Vec3& previous, const Vec3& normal);
+
+//! Complete unit normals of points [begin, end) to frames, with signs settled: a normal
+//! keeps the side of the previous one (given on entry in `previous`, zero if none); points
+//! without a previous normal are oriented by `orientation`. 2D tangents are n turned −90°
+//! (so n is t turned +90°); 3D tangents are continued from the previous ones.
+template <int D>
+void complete_frames(const std::vector<Vec<D>>& position, long begin, long end,
+                     NormalOrientation orientation, const std::vector<Vec<D>>& previous,
+                     std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent, double cell);
 
 }  // namespace pellicle

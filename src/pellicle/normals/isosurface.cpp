@@ -1,0 +1,267 @@
+#include "pellicle/normals/isosurface.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "pellicle/normals/cell_groups.hpp"
+
+namespace pellicle {
+
+namespace {
+
+constexpr int kTries = 8;              //!< placements of the extra point before giving up
+constexpr double kMaxCondition = 1e6;  //!< of A, i.e. 1e12 for the normal equations
+
+//! Quadratic B-spline on unit spacing: for ξ, the first of the three supporting centres and
+//! their weights and derivatives (paper §5, s̄⁽²⁾).
+int quadratic_bspline(double xi, double* w, double* dw) {
+  const int base = static_cast<int>(std::floor(xi - 0.5));
+  const double f = xi - base;  // in [0.5, 1.5)
+  w[0] = 0.5 * (1.5 - f) * (1.5 - f);
+  w[1] = 0.75 - (f - 1.0) * (f - 1.0);
+  w[2] = 0.5 * (f - 0.5) * (f - 0.5);
+  dw[0] = f - 1.5;
+  dw[1] = -2.0 * (f - 1.0);
+  dw[2] = f - 0.5;
+  return base;
+}
+
+//! The local interpolant: linear on a block of s^D cells (its 2^D corners), or quadratic
+//! B-splines on the 3^D cell centres around one cell.
+template <int D>
+struct LocalBasis {
+  bool quadratic = false;
+  Vec<D> origin;  //!< linear: the block's lower corner; quadratic: the grid origin
+  double size;    //!< linear: block edge s h; quadratic: the cell h
+  IVec<D> cell;   //!< quadratic: the cell whose points are fitted
+
+  int unknowns() const { return quadratic ? (D == 2 ? 9 : 27) : (1 << D); }
+
+  //! Values (and, if grad is non-null, gradients) of every basis function at x.
+  void evaluate(const Vec<D>& x, double* value, Vec<D>* grad) const {
+    if (!quadratic) {
+      const Vec<D> xi = (x - origin) / size;
+      for (int c = 0; c < (1 << D); ++c) {
+        double v = 1.0;
+        Vec<D> g = Vec<D>::Constant(1.0 / size);
+        for (int d = 0; d < D; ++d) {
+          const bool upper = c & (1 << d);
+          const double f = upper ? xi[d] : 1.0 - xi[d];
+          v *= f;
+          for (int e = 0; e < D; ++e) g[e] *= e == d ? (upper ? 1.0 : -1.0) : f;
+        }
+        value[c] = v;
+        if (grad) grad[c] = g;
+      }
+      return;
+    }
+    double w[D][3], dw[D][3];
+    for (int d = 0; d < D; ++d)  // cell centres sit at integer values of ξ − ½
+      quadratic_bspline((x[d] - origin[d]) / size - 0.5, w[d], dw[d]);
+    for (int k = 0; k < unknowns(); ++k) {
+      int rest = k;
+      double v = 1.0;
+      Vec<D> g = Vec<D>::Constant(1.0 / size);
+      for (int d = 0; d < D; ++d) {
+        const int a = rest % 3;
+        rest /= 3;
+        v *= w[d][a];
+        for (int e = 0; e < D; ++e) g[e] *= e == d ? dw[d][a] : w[d][a];
+      }
+      value[k] = v;
+      if (grad) grad[k] = g;
+    }
+  }
+
+  //! A point drawn uniformly in the region the construction covers.
+  Vec<D> random_point(std::mt19937& rng) const {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Vec<D> x;
+    for (int d = 0; d < D; ++d)
+      x[d] = quadratic ? origin[d] + (cell[d] + u(rng)) * size : origin[d] + u(rng) * size;
+    return x;
+  }
+};
+
+//! The extra point with χ = 0 must lie off the membrane: of a few random candidates in the
+//! cell, the one farthest from every membrane point (a point next to the membrane would
+//! force χ from 1 to 0 over a tiny distance and tilt ∇χ).
+template <int D>
+Vec<D> off_membrane_point(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& points,
+                          std::mt19937& rng) {
+  constexpr int kCandidates = 16;
+  Vec<D> best = basis.random_point(rng);
+  double farthest = -1.0;
+  for (int c = 0; c < kCandidates; ++c) {
+    const Vec<D> x = c == 0 ? best : basis.random_point(rng);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto* p : points) nearest = std::min(nearest, (*p - x).squaredNorm());
+    if (nearest > farthest) farthest = nearest, best = x;
+  }
+  return best;
+}
+
+//! Solve for χ (eq 10 in the least-squares sense) with the extra point moved until the
+//! system is well conditioned. Returns cond(A)² of the system used.
+template <int D>
+double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& points,
+                 std::mt19937& rng, Eigen::VectorXd& chi) {
+  const int m = basis.unknowns(), n = static_cast<int>(points.size());
+  Eigen::MatrixXd A(n + 1, m);
+  Eigen::VectorXd b = Eigen::VectorXd::Ones(n + 1);
+  b[n] = 0.0;
+  std::vector<double> row(m);
+  for (int p = 0; p < n; ++p) {
+    basis.evaluate(*points[p], row.data(), nullptr);
+    for (int k = 0; k < m; ++k) A(p, k) = row[k];
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (int attempt = 0; attempt < kTries; ++attempt) {
+    basis.evaluate(off_membrane_point(basis, points, rng), row.data(), nullptr);
+    for (int k = 0; k < m; ++k) A(n, k) = row[k];
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    const long rank = qr.rank();
+    if (rank == 0) continue;
+    const auto R = qr.matrixQR();
+    const double condition = std::abs(R(0, 0)) / std::abs(R(rank - 1, rank - 1));
+    if (condition < best) {
+      best = condition;
+      chi = rank == m ? Eigen::VectorXd(qr.solve(b))
+                      : Eigen::VectorXd(
+                            Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(A).solve(b));
+    }
+    if (best < kMaxCondition) break;
+  }
+  return best * best;
+}
+
+//! Principal direction of least spread of the points: the fallback normal.
+template <int D>
+Vec<D> least_spread(const std::vector<const Vec<D>*>& points) {
+  Vec<D> mean = Vec<D>::Zero();
+  for (const auto* x : points) mean += *x;
+  mean /= static_cast<double>(points.size());
+  Mat<D> cov = Mat<D>::Zero();
+  for (const auto* x : points) cov += (*x - mean) * (*x - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(cov);
+  return eig.eigenvectors().col(0);
+}
+
+}  // namespace
+
+template <int D>
+void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin, long end,
+                                       std::vector<Vec<D>>& normal) {
+  const double h = setup_.cell;
+  const CellGroups<D> groups(x, begin, end, setup_.grid_origin, h);
+  statistics_ = {};
+  std::vector<std::vector<double>> conditions(groups.size());
+  long fallbacks = 0;
+#pragma omp parallel for schedule(dynamic, 16) reduction(+ : fallbacks)
+  for (int g = 0; g < groups.size(); ++g) {
+    const IVec<D> cell = groups.cell(g);
+    const long own = groups.count(g);
+    LocalBasis<D> basis;
+    std::vector<const Vec<D>*> fit;
+    const bool quadratic = basis_ == IsosurfaceBasis::quadratic ||
+                           (basis_ == IsosurfaceBasis::hybrid && own >= quadratic_threshold);
+    if (quadratic) {
+      basis = {true, setup_.grid_origin, h, cell};
+      for (const long* p = groups.begin(g); p != groups.end(g); ++p) fit.push_back(&x[*p]);
+    } else {
+      // Linear on the cell, or (hybrid, too few points) on the smallest block of s^D cells
+      // around it that holds enough points, the fullest such block.
+      int s = 1;
+      IVec<D> lower = cell;
+      if (basis_ == IsosurfaceBasis::hybrid && own < linear_threshold) {
+        for (s = 2; s <= 4; ++s) {
+          long best = -1;
+          IVec<D> offset = IVec<D>::Zero();
+          for (int o = 0; o < static_cast<int>(std::pow(s, D)); ++o) {
+            int rest = o;
+            for (int d = 0; d < D; ++d) offset[d] = rest % s, rest /= s;
+            const IVec<D> corner = cell - offset;
+            long count = 0;
+            for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
+              IVec<D> inner;
+              int r = c;
+              for (int d = 0; d < D; ++d) inner[d] = corner[d] + r % s, r /= s;
+              count += groups.count_in(inner);
+            }
+            if (count > best) best = count, lower = corner;
+          }
+          if (best >= linear_threshold) break;
+        }
+        s = std::min(s, 4);
+      }
+      basis = {false, setup_.grid_origin + h * lower.template cast<double>(), s * h, lower};
+      for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
+        IVec<D> inner;
+        int r = c;
+        for (int d = 0; d < D; ++d) inner[d] = lower[d] + r % s, r /= s;
+        const int other = groups.find(inner);
+        if (other >= 0)
+          for (const long* p = groups.begin(other); p != groups.end(other); ++p)
+            fit.push_back(&x[*p]);
+      }
+    }
+    std::mt19937 rng(setup_.seed ^ static_cast<unsigned>(CellGroups<D>::key(cell) * 2654435761u));
+    Eigen::VectorXd chi;
+    conditions[g].push_back(solve_chi(basis, fit, rng, chi));
+    std::vector<double> value(basis.unknowns());
+    std::vector<Vec<D>> grad(basis.unknowns());
+    for (const long* p = groups.begin(g); p != groups.end(g); ++p) {
+      basis.evaluate(x[*p], value.data(), grad.data());
+      Vec<D> n = Vec<D>::Zero();
+      for (int k = 0; k < basis.unknowns(); ++k) n += chi[k] * grad[k];  // eqs 11, 16
+      if (n.norm() > 1e-9 / h && n.allFinite()) {
+        normal[*p] = n.normalized();
+      } else {
+        ++fallbacks;
+        normal[*p] =
+            fit.size() >= static_cast<std::size_t>(D) ? least_spread(fit) : Vec<D>::Unit(D - 1);
+      }
+    }
+  }
+  statistics_.fallbacks = fallbacks;
+  for (const auto& c : conditions)
+    statistics_.condition.insert(statistics_.condition.end(), c.begin(), c.end());
+}
+
+template <int D>
+void IsosurfaceEstimator<D>::estimate(const std::vector<Vec<D>>& position, long begin, long end,
+                                      std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) {
+  const std::vector<Vec<D>> previous(normal.begin() + begin, normal.begin() + end);
+  gradients(position, begin, end, normal);
+  std::vector<Vec<D>> previous_full(normal.size(), Vec<D>::Zero());
+  std::copy(previous.begin(), previous.end(), previous_full.begin() + begin);
+  complete_frames<D>(position, begin, end, setup_.orientation, previous_full, normal, tangent,
+                     setup_.cell);
+}
+
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_linear(const FrameSetup<D>& setup) {
+  return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::linear);
+}
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_quadratic(const FrameSetup<D>& setup) {
+  return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::quadratic);
+}
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& setup) {
+  return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::hybrid);
+}
+
+template class IsosurfaceEstimator<2>;
+template class IsosurfaceEstimator<3>;
+template std::unique_ptr<FrameEstimator<2>> make_isosurface_linear<2>(const FrameSetup<2>&);
+template std::unique_ptr<FrameEstimator<3>> make_isosurface_linear<3>(const FrameSetup<3>&);
+template std::unique_ptr<FrameEstimator<2>> make_isosurface_quadratic<2>(const FrameSetup<2>&);
+template std::unique_ptr<FrameEstimator<3>> make_isosurface_quadratic<3>(const FrameSetup<3>&);
+template std::unique_ptr<FrameEstimator<2>> make_isosurface_hybrid<2>(const FrameSetup<2>&);
+template std::unique_ptr<FrameEstimator<3>> make_isosurface_hybrid<3>(const FrameSetup<3>&);
+
+}  // namespace pellicle

@@ -1,0 +1,63 @@
+#pragma once
+//! The local isosurface method of Sulsky & York (2000): in each grid cell, nodal values χ of a
+//! B-spline interpolant are found in the least-squares sense so that χ = 1 at the cell's
+//! membrane points and χ = 0 at one extra point placed at random in the cell (eqs 10, 13);
+//! the normal at a point is ∇χ there (eqs 11, 16).
+//!   linear:    bilinear/trilinear χ on the cell's 4 / 8 nodes (§3–4);
+//!   quadratic: quadratic B-splines centred on the 9 / 27 surrounding cell centres (§5–6);
+//!   hybrid:    the paper's §8 rule: quadratic when the cell holds enough points (2D: 7),
+//!              linear when it holds a few (2D: 3–6), and cells with fewer joined with
+//!              neighbours into 2×2 (2×2×2), 3×3 … blocks with linear χ until enough.
+//! Each small system is solved by a rank-revealing QR (minimum-norm when underdetermined),
+//! not the normal equations; when its condition number is too large the extra point is moved
+//! (up to 8 tries; §4). Where ∇χ vanishes the cell's points fall back to principal
+//! components. Normals are unsigned (the method cannot tell sides); see complete_frames.
+
+#include <memory>
+#include <vector>
+
+#include "pellicle/normals/frame_estimator.hpp"
+
+namespace pellicle {
+
+enum class IsosurfaceBasis { linear, quadratic, hybrid };
+
+//! Diagnostics of the last estimate (for `pellicle normals` and the tests).
+struct IsosurfaceStatistics {
+  std::vector<double> condition;  //!< per solved system: cond(A)² = cond of the normal equations
+  long fallbacks = 0;             //!< points whose ∇χ vanished
+};
+
+template <int D>
+class IsosurfaceEstimator final : public FrameEstimator<D> {
+ public:
+  IsosurfaceEstimator(const FrameSetup<D>& setup, IsosurfaceBasis basis)
+      : setup_(setup), basis_(basis) {}
+  void estimate(const std::vector<Vec<D>>& position, long begin, long end,
+                std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override;
+
+  //! Raw unit gradients ∇χ/|∇χ| of points [begin, end), no orientation (the paper's output).
+  void gradients(const std::vector<Vec<D>>& position, long begin, long end,
+                 std::vector<Vec<D>>& normal);
+  const IsosurfaceStatistics& statistics() const { return statistics_; }
+  //! Smallest point counts for the quadratic and the unjoined linear construction (hybrid).
+  static constexpr int quadratic_threshold = D == 2 ? 7 : 26;
+  static constexpr int linear_threshold = D == 2 ? 3 : 7;
+
+ private:
+  FrameSetup<D> setup_;
+  IsosurfaceBasis basis_;
+  IsosurfaceStatistics statistics_;
+};
+
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_linear(const FrameSetup<D>& setup);
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_quadratic(const FrameSetup<D>& setup);
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& setup);
+
+extern template class IsosurfaceEstimator<2>;
+extern template class IsosurfaceEstimator<3>;
+
+}  // namespace pellicle
