@@ -35,6 +35,16 @@ struct ValidateOptions {
 //! Exit code 1 when a check is outside its accepted range.
 int command_validate(const ValidateOptions& options);
 
+struct NormalsOptions {
+  std::string points;  //!< CSV: x,y[,z] and optionally the exact normal
+  double cell = 0.0;
+  std::string method = "isosurface-hybrid";
+  std::vector<double> origin;  //!< a grid node; default the origin
+  std::string out;
+};
+
+int command_normals(const NormalsOptions& options);
+
 //! Print an input problem list to stderr; returns kExitBadInput.
 int report_input_error(const std::exception& error);
 

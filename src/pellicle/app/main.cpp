@@ -55,6 +55,20 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   validate_cmd->add_option("--out", validate.out_dir, "Output directory");
 
+  NormalsOptions normals;
+  auto* normals_cmd = app.add_subcommand(
+      "normals", "Normals of points from a CSV file by a connectivity-free estimator");
+  normals_cmd
+      ->add_option("--points", normals.points, "CSV of x,y[,z] with optional exact normal columns")
+      ->required();
+  normals_cmd->add_option("--cell", normals.cell, "Grid cell size")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  normals_cmd->add_option("--method", normals.method, "Estimator (default isosurface-hybrid)");
+  normals_cmd->add_option("--origin", normals.origin, "A grid node, X,Y[,Z] (default 0)")
+      ->delimiter(',');
+  normals_cmd->add_option("--out", normals.out, "Output CSV")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -67,6 +81,7 @@ int main(int argc, char** argv) {
     if (*check_cmd) return command_check(check);
     if (*bench_cmd) return command_bench(bench);
     if (*validate_cmd) return command_validate(validate);
+    if (*normals_cmd) return command_normals(normals);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     return 1;

@@ -108,7 +108,7 @@ Vec<D> off_membrane_point(const LocalBasis<D>& basis, const std::vector<const Ve
 //! system is well conditioned. Returns cond(A)² of the system used.
 template <int D>
 double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& points,
-                 std::mt19937& rng, Eigen::VectorXd& chi) {
+                 std::mt19937& rng, bool normal_equations, Eigen::VectorXd& chi) {
   const int m = basis.unknowns(), n = static_cast<int>(points.size());
   Eigen::MatrixXd A(n + 1, m);
   Eigen::VectorXd b = Eigen::VectorXd::Ones(n + 1);
@@ -122,6 +122,18 @@ double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& p
   for (int attempt = 0; attempt < kTries; ++attempt) {
     basis.evaluate(off_membrane_point(basis, points, rng), row.data(), nullptr);
     for (int k = 0; k < m; ++k) A(n, k) = row[k];
+    if (normal_equations) {  // thesis eqs 7.10–7.12: T χ = Sᵀ χ⁰
+      const Eigen::MatrixXd T = A.transpose() * A;
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(T);
+      const double condition =
+          eig.eigenvalues().maxCoeff() / std::max(eig.eigenvalues().minCoeff(), 1e-300);
+      if (condition < best) {
+        best = condition;
+        chi = T.ldlt().solve(A.transpose() * b);
+      }
+      if (best < kMaxCondition * kMaxCondition) break;
+      continue;
+    }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
     const long rank = qr.rank();
     if (rank == 0) continue;
@@ -135,7 +147,7 @@ double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& p
     }
     if (best < kMaxCondition) break;
   }
-  return best * best;
+  return normal_equations ? best : best * best;
 }
 
 //! Principal direction of least spread of the points: the fallback normal.
@@ -210,7 +222,8 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
     }
     std::mt19937 rng(setup_.seed ^ static_cast<unsigned>(CellGroups<D>::key(cell) * 2654435761u));
     Eigen::VectorXd chi;
-    conditions[g].push_back(solve_chi(basis, fit, rng, chi));
+    conditions[g].push_back(
+        solve_chi(basis, fit, rng, basis_ == IsosurfaceBasis::mass_matrix, chi));
     std::vector<double> value(basis.unknowns());
     std::vector<Vec<D>> grad(basis.unknowns());
     for (const long* p = groups.begin(g); p != groups.end(g); ++p) {
@@ -254,6 +267,10 @@ template <int D>
 std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& setup) {
   return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::hybrid);
 }
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_mass_matrix(const FrameSetup<D>& setup) {
+  return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::mass_matrix);
+}
 
 template class IsosurfaceEstimator<2>;
 template class IsosurfaceEstimator<3>;
@@ -263,5 +280,7 @@ template std::unique_ptr<FrameEstimator<2>> make_isosurface_quadratic<2>(const F
 template std::unique_ptr<FrameEstimator<3>> make_isosurface_quadratic<3>(const FrameSetup<3>&);
 template std::unique_ptr<FrameEstimator<2>> make_isosurface_hybrid<2>(const FrameSetup<2>&);
 template std::unique_ptr<FrameEstimator<3>> make_isosurface_hybrid<3>(const FrameSetup<3>&);
+template std::unique_ptr<FrameEstimator<2>> make_mass_matrix<2>(const FrameSetup<2>&);
+template std::unique_ptr<FrameEstimator<3>> make_mass_matrix<3>(const FrameSetup<3>&);
 
 }  // namespace pellicle

@@ -20,7 +20,9 @@
 
 namespace pellicle {
 
-enum class IsosurfaceBasis { linear, quadratic, hybrid };
+//! `mass_matrix` is the linear construction solved through the normal equations
+//! T χ = Sᵀ χ⁰, T = SᵀS (thesis §7.4, the paper's eq 13), kept to compare with the QR solve.
+enum class IsosurfaceBasis { linear, quadratic, hybrid, mass_matrix };
 
 //! Diagnostics of the last estimate (for `pellicle normals` and the tests).
 struct IsosurfaceStatistics {
@@ -56,6 +58,8 @@ template <int D>
 std::unique_ptr<FrameEstimator<D>> make_isosurface_quadratic(const FrameSetup<D>& setup);
 template <int D>
 std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& setup);
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_mass_matrix(const FrameSetup<D>& setup);
 
 extern template class IsosurfaceEstimator<2>;
 extern template class IsosurfaceEstimator<3>;

@@ -1,4 +1,5 @@
 //! The frame-estimator registry: one line per estimator.
+#include "pellicle/normals/colour_function.hpp"
 #include "pellicle/normals/connectivity.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
 #include "pellicle/normals/isosurface.hpp"
@@ -16,6 +17,14 @@ const std::vector<FrameEstimatorChoice<D>>& frame_estimators() {
        &make_isosurface_quadratic<D>},
       {"isosurface-hybrid", "quadratic, linear or joined cells by point count (§8)",
        &make_isosurface_hybrid<D>},
+      {"mass-matrix", "linear isosurface through the normal equations (thesis §7.4)",
+       &make_mass_matrix<D>},
+      {"colour-simple", "gradient of the points' colour, linear (thesis §7.1)",
+       &make_colour_simple<D>},
+      {"colour-quadratic", "colour on cell centres, quadratic (thesis §7.2)",
+       &make_colour_quadratic<D>},
+      {"colour-cubic", "colour on nodes, cubic B-splines (thesis §7.3)", &make_colour_cubic<D>},
+      {"pca", "principal components of the neighbours within 1.5 cells", &make_pca<D>},
   };
   return list;
 }

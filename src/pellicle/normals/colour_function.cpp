@@ -1,0 +1,202 @@
+#include "pellicle/normals/colour_function.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <unordered_map>
+
+#include "pellicle/normals/cell_groups.hpp"
+
+namespace pellicle {
+
+namespace {
+
+//! 1D B-splines on unit spacing: first supporting node, weights and derivatives.
+int linear_spline(double xi, double* w, double* dw) {
+  const int base = static_cast<int>(std::floor(xi));
+  const double f = xi - base;
+  w[0] = 1 - f, w[1] = f, dw[0] = -1, dw[1] = 1;
+  return base;
+}
+int quadratic_spline(double xi, double* w, double* dw) {
+  const int base = static_cast<int>(std::floor(xi - 0.5));
+  const double f = xi - base;
+  w[0] = 0.5 * (1.5 - f) * (1.5 - f), w[1] = 0.75 - (f - 1) * (f - 1),
+  w[2] = 0.5 * (f - 0.5) * (f - 0.5);
+  dw[0] = f - 1.5, dw[1] = -2 * (f - 1), dw[2] = f - 0.5;
+  return base;
+}
+int cubic_spline(double xi, double* w, double* dw) {
+  const int base = static_cast<int>(std::floor(xi)) - 1;
+  const double f = xi - base, r1 = f - 1, r2 = 2 - f;
+  w[0] = (2 - f) * (2 - f) * (2 - f) / 6;
+  w[1] = 0.5 * r1 * r1 * r1 - r1 * r1 + 2.0 / 3;
+  w[2] = 0.5 * r2 * r2 * r2 - r2 * r2 + 2.0 / 3;
+  w[3] = (f - 1) * (f - 1) * (f - 1) / 6;
+  dw[0] = -0.5 * (2 - f) * (2 - f), dw[1] = 1.5 * r1 * r1 - 2 * r1,
+  dw[2] = -(1.5 * r2 * r2 - 2 * r2);
+  dw[3] = 0.5 * (f - 1) * (f - 1);
+  return base;
+}
+
+using Spline = int (*)(double, double*, double*);
+
+//! Visit the tensor-product stencil of a spline at ξ (unit spacing): f(index, N, ∇N).
+template <int D, int W, class F>
+void stencil(Spline spline, const Vec<D>& xi, F&& f) {
+  double w[D][W], dw[D][W];
+  IVec<D> base;
+  for (int d = 0; d < D; ++d) base[d] = spline(xi[d], w[d], dw[d]);
+  for (int k = 0; k < static_cast<int>(std::pow(W, D)); ++k) {
+    IVec<D> index;
+    int rest = k;
+    double N = 1.0;
+    Vec<D> g = Vec<D>::Ones();
+    for (int d = 0; d < D; ++d) {
+      const int a = rest % W;
+      rest /= W;
+      index[d] = base[d] + a;
+      N *= w[d][a];
+      for (int e = 0; e < D; ++e) g[e] *= e == d ? dw[d][a] : w[d][a];
+    }
+    f(index, N, g);
+  }
+}
+
+enum class Colour { simple, quadratic, cubic };
+
+template <int D>
+class ColourFunction final : public FrameEstimator<D> {
+ public:
+  ColourFunction(const FrameSetup<D>& setup, Colour kind) : setup_(setup), kind_(kind) {}
+
+  void estimate(const std::vector<Vec<D>>& x, long begin, long end, std::vector<Vec<D>>& normal,
+                std::vector<Vec<D>>& tangent) override {
+    const std::vector<Vec<D>> previous = normal;
+    const double h = setup_.cell;
+    auto xi = [&](long p) { return Vec<D>((x[p] - setup_.grid_origin) / h); };
+    using Key = std::int64_t;
+    std::unordered_map<Key, Vec<D>> node_normal;
+    std::unordered_map<Key, double> colour;
+    if (kind_ == Colour::simple) {  // eq 7.2
+      for (long p = begin; p < end; ++p)
+        stencil<D, 2>(&linear_spline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
+          auto [it, fresh] = node_normal.try_emplace(CellGroups<D>::key(i), Vec<D>::Zero());
+          it->second += g / h;
+        });
+    } else if (kind_ == Colour::quadratic) {  // eqs 7.4–7.5: cell centres at integer ξ − ½
+      std::unordered_map<Key, IVec<D>> where;
+      for (long p = begin; p < end; ++p)
+        stencil<D, 3>(&quadratic_spline, Vec<D>(xi(p) - Vec<D>::Constant(0.5)),
+                      [&](const IVec<D>& c, double N, const Vec<D>&) {
+                        colour[CellGroups<D>::key(c)] += N;
+                        where[CellGroups<D>::key(c)] = c;
+                      });
+      for (const auto& [key, c] : where) {  // ∇N_i at the centre of cell c, for its corners
+        const Vec<D> centre = c.template cast<double>() + Vec<D>::Constant(0.5);
+        stencil<D, 2>(&linear_spline, centre, [&](const IVec<D>& i, double, const Vec<D>& g) {
+          auto [it, fresh] = node_normal.try_emplace(CellGroups<D>::key(i), Vec<D>::Zero());
+          it->second += colour[key] * g / h;
+        });
+      }
+    } else {  // eq 7.6: node colours with cubic B-splines
+      for (long p = begin; p < end; ++p)
+        stencil<D, 4>(&cubic_spline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
+          colour[CellGroups<D>::key(i)] += N;
+        });
+    }
+    for (long p = begin; p < end; ++p) {
+      Vec<D> n = Vec<D>::Zero();
+      if (kind_ == Colour::cubic) {  // eq 7.7
+        stencil<D, 4>(&cubic_spline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
+          const auto it = colour.find(CellGroups<D>::key(i));
+          if (it != colour.end()) n += it->second * g / h;
+        });
+      } else {  // eq 7.3
+        stencil<D, 2>(&linear_spline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
+          const auto it = node_normal.find(CellGroups<D>::key(i));
+          if (it != node_normal.end()) n += N * it->second;
+        });
+      }
+      normal[p] = n.norm() > 0.0 ? Vec<D>(-n.normalized()) : Vec<D>::Unit(D - 1);
+    }
+    complete_frames<D>(x, begin, end, setup_.orientation, previous, normal, tangent, h);
+  }
+
+ private:
+  FrameSetup<D> setup_;
+  Colour kind_;
+};
+
+template <int D>
+class PrincipalComponents final : public FrameEstimator<D> {
+ public:
+  explicit PrincipalComponents(const FrameSetup<D>& setup) : setup_(setup) {}
+  void estimate(const std::vector<Vec<D>>& x, long begin, long end, std::vector<Vec<D>>& normal,
+                std::vector<Vec<D>>& tangent) override {
+    const std::vector<Vec<D>> previous = normal;
+    const double r = 1.5 * setup_.cell;
+    const CellGroups<D> groups(x, begin, end, Vec<D>::Zero(), r);
+#pragma omp parallel for schedule(static)
+    for (long p = begin; p < end; ++p) {
+      IVec<D> c;
+      for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / r));
+      double weight = 0.0;
+      Vec<D> mean = Vec<D>::Zero();
+      Mat<D> second = Mat<D>::Zero();
+      for (int o = 0; o < (D == 2 ? 9 : 27); ++o) {
+        IVec<D> near = c;
+        int rest = o;
+        for (int d = 0; d < D; ++d) near[d] += rest % 3 - 1, rest /= 3;
+        const int g = groups.find(near);
+        if (g < 0) continue;
+        for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
+          const double s = (x[*q] - x[p]).squaredNorm() / (r * r);
+          if (s >= 1.0) continue;
+          const double w = (1 - s) * (1 - s);
+          weight += w;
+          mean += w * x[*q];
+          second += w * x[*q] * x[*q].transpose();
+        }
+      }
+      mean /= weight;
+      const Mat<D> covariance = second / weight - mean * mean.transpose();
+      const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(covariance);
+      normal[p] = eig.eigenvectors().col(0);  // least spread
+    }
+    complete_frames<D>(x, begin, end, setup_.orientation, previous, normal, tangent, setup_.cell);
+  }
+
+ private:
+  FrameSetup<D> setup_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_colour_simple(const FrameSetup<D>& setup) {
+  return std::make_unique<ColourFunction<D>>(setup, Colour::simple);
+}
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_colour_quadratic(const FrameSetup<D>& setup) {
+  return std::make_unique<ColourFunction<D>>(setup, Colour::quadratic);
+}
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_colour_cubic(const FrameSetup<D>& setup) {
+  return std::make_unique<ColourFunction<D>>(setup, Colour::cubic);
+}
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_pca(const FrameSetup<D>& setup) {
+  return std::make_unique<PrincipalComponents<D>>(setup);
+}
+
+#define PELLICLE_COLOUR_INSTANTIATE(D)                                                        \
+  template std::unique_ptr<FrameEstimator<D>> make_colour_simple<D>(const FrameSetup<D>&);    \
+  template std::unique_ptr<FrameEstimator<D>> make_colour_quadratic<D>(const FrameSetup<D>&); \
+  template std::unique_ptr<FrameEstimator<D>> make_colour_cubic<D>(const FrameSetup<D>&);     \
+  template std::unique_ptr<FrameEstimator<D>> make_pca<D>(const FrameSetup<D>&);
+PELLICLE_COLOUR_INSTANTIATE(2)
+PELLICLE_COLOUR_INSTANTIATE(3)
+#undef PELLICLE_COLOUR_INSTANTIATE
+
+}  // namespace pellicle
