@@ -31,10 +31,15 @@ void hybrid_normals(benchmark::State& state) {
   for (auto _ : state) estimator.gradients(x, 0, n, normal);
   state.SetItemsProcessed(state.iterations() * n);
   double worst = 0.0;
-  for (long i = 0; i < n; ++i) worst = std::max(worst, std::acos(std::min(1.0, std::abs(normal[i].dot(x[i])))));
+  for (long i = 0; i < n; ++i)
+    worst = std::max(worst, std::acos(std::min(1.0, std::abs(normal[i].dot(x[i])))));
   state.counters["max_error_deg"] = worst * 180.0 / 3.141592653589793;
 }
 
-BENCHMARK(hybrid_normals)->Args({1000000, 70})->Args({1000000, 35})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(hybrid_normals)
+    ->Args({1000000, 70})
+    ->Args({1000000, 35})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace

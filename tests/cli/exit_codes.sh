@@ -49,5 +49,22 @@ grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
   { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }
 ls "$work/leave" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
 
+# pellicle normals: a circle with exact normals; errors reported, bad files rejected.
+/usr/bin/env python3 - "$work/circle.csv" <<'PY' 2>/dev/null || awk 'BEGIN{pi=atan2(0,-1); print "x,y,nx,ny"; for(k=0;k<100;k++){a=2*pi*k/100; printf "%.9f,%.9f,%.9f,%.9f\n", 5+2*cos(a), 5+2*sin(a), cos(a), sin(a)}}' > "$work/circle.csv"
+import math, sys
+with open(sys.argv[1], "w") as f:
+    f.write("x,y,nx,ny\n")
+    for k in range(100):
+        a = 2 * math.pi * k / 100
+        f.write("%.9f,%.9f,%.9f,%.9f\n" % (5 + 2 * math.cos(a), 5 + 2 * math.sin(a), math.cos(a), math.sin(a)))
+PY
+expect 0 "error     max" -- "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --method pca --out "$work/n.csv"
+[ "$(wc -l < "$work/n.csv")" -eq 101 ] || { echo "FAIL: normals output has the wrong length"; failures=$((failures + 1)); }
+printf 'x,y\n1,2\n1,2,3\n' > "$work/ragged.csv"
+expect 2 "ragged.csv:3:1: --points: row has 3 columns, unlike the rows before it" -- \
+  "$pellicle" normals --points "$work/ragged.csv" --cell 1 --out "$work/r.csv"
+expect 2 "expected a connectivity-free estimator" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell 1 --method connectivity --out "$work/r.csv"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

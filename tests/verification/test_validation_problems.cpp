@@ -9,6 +9,7 @@
 //   pendulum         IJNME §3.1.2: θ(t) against bar elements, error falling with refinement
 //   drum             3D membrane: fundamental period within 3%, error falling with refinement
 //   sphere-breathing 3D curved membrane: breathing period within 2%
+//   normals-accuracy every frame estimator on whole curves and surfaces
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -55,6 +56,9 @@ TEST(Validation, Drum) {
 }
 TEST(Validation, SphereBreathing) {
   expect_all_checks_pass("sphere-breathing");
+}
+TEST(Validation, NormalsAccuracy) {
+  expect_all_checks_pass("normals-accuracy");
 }
 
 TEST(Validation, EveryProblemHasAName) {

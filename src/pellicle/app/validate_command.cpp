@@ -104,6 +104,7 @@ int command_validate(const ValidateOptions& o) {
       report += report_row(c);
       if (!c.passed()) ++failed;
     }
+    if (!outcome.table.empty()) report += "\n" + outcome.table;
     for (const auto& s : outcome.series) {
       write_series(dir, *p, s);
       report += "\n![" + s.title + "](" + p->name + "_" + s.name + ".png)\n";

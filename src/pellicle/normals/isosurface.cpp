@@ -104,12 +104,72 @@ Vec<D> off_membrane_point(const LocalBasis<D>& basis, const std::vector<const Ve
   return best;
 }
 
+//! Principal direction of least spread of the points: the fallback normal.
+template <int D>
+Vec<D> least_spread(const std::vector<const Vec<D>*>& points) {
+  Vec<D> mean = Vec<D>::Zero();
+  for (const auto* x : points) mean += *x;
+  mean /= static_cast<double>(points.size());
+  Mat<D> cov = Mat<D>::Zero();
+  for (const auto* x : points) cov += (*x - mean) * (*x - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(cov);
+  return eig.eigenvectors().col(0);
+}
+
+//! The offset variant's extra points: 2^(D−1) points with χ = 0 on one side of the points,
+//! half a cell along their direction of least spread and a quarter cell apart across it,
+//! kept inside the region the basis covers. They pin χ's slope across the whole patch, which
+//! a single point cannot in 3D (trilinear functions vanishing on a plane form a 4-dimensional
+//! family), so ∇χ cannot vanish or turn along the patch.
+template <int D>
+std::vector<Vec<D>> offset_points(const LocalBasis<D>& basis,
+                                  const std::vector<const Vec<D>*>& points, double cell) {
+  Vec<D> mean = Vec<D>::Zero();
+  for (const auto* x : points) mean += *x;
+  mean /= static_cast<double>(points.size());
+  const Vec<D> nu =
+      points.size() >= static_cast<std::size_t>(D) ? least_spread(points) : Vec<D>::Unit(D - 1);
+  Mat<D> frame =
+      Eigen::JacobiSVD<Mat<D>>(Mat<D>(nu * nu.transpose()), Eigen::ComputeFullU).matrixU();
+  Vec<D> lo, hi;
+  for (int d = 0; d < D; ++d) {
+    lo[d] = basis.quadratic ? basis.origin[d] + basis.cell[d] * basis.size : basis.origin[d];
+    hi[d] = lo[d] + basis.size;
+  }
+  std::vector<Vec<D>> out;
+  for (int k = 0; k < (1 << (D - 1)); ++k) {
+    Vec<D> x = mean + 0.5 * cell * nu;
+    for (int d = 1; d < D; ++d) x += ((k >> (d - 1)) & 1 ? 0.25 : -0.25) * cell * frame.col(d);
+    out.push_back(x.cwiseMax(lo).cwiseMin(hi));
+  }
+  return out;
+}
+
 //! Solve for χ (eq 10 in the least-squares sense) with the extra point moved until the
 //! system is well conditioned. Returns cond(A)² of the system used.
 template <int D>
 double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& points,
-                 std::mt19937& rng, bool normal_equations, Eigen::VectorXd& chi) {
+                 std::mt19937& rng, bool normal_equations, Eigen::VectorXd& chi,
+                 const std::vector<Vec<D>>* fixed_extra = nullptr) {
   const int m = basis.unknowns(), n = static_cast<int>(points.size());
+  if (fixed_extra) {  // the offset variant: no random point, no retries
+    const int e = static_cast<int>(fixed_extra->size());
+    Eigen::MatrixXd A(n + e, m);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(n + e);
+    b.head(n).setOnes();
+    std::vector<double> row(m);
+    for (int p = 0; p < n + e; ++p) {
+      basis.evaluate(p < n ? *points[p] : (*fixed_extra)[p - n], row.data(), nullptr);
+      for (int k = 0; k < m; ++k) A(p, k) = row[k];
+    }
+    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
+    chi = cod.solve(b);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(A);
+    const long rank = std::max<long>(1, qr.rank());
+    const double condition =
+        std::abs(qr.matrixQR()(0, 0)) / std::abs(qr.matrixQR()(rank - 1, rank - 1));
+    return condition * condition;
+  }
   Eigen::MatrixXd A(n + 1, m);
   Eigen::VectorXd b = Eigen::VectorXd::Ones(n + 1);
   b[n] = 0.0;
@@ -150,16 +210,20 @@ double solve_chi(const LocalBasis<D>& basis, const std::vector<const Vec<D>*>& p
   return normal_equations ? best : best * best;
 }
 
-//! Principal direction of least spread of the points: the fallback normal.
+//! Whether points span a piece of curve (2D) or surface (3D) wide enough to fix a normal:
+//! a cell that the membrane only grazes holds a few points along a sliver (3D: nearly on a
+//! line), whose normal no local fit can tell. Spread measured by the covariance eigenvalues.
 template <int D>
-Vec<D> least_spread(const std::vector<const Vec<D>*>& points) {
+bool well_spread(const std::vector<const Vec<D>*>& points, double h) {
+  if (points.size() < static_cast<std::size_t>(D)) return false;
   Vec<D> mean = Vec<D>::Zero();
   for (const auto* x : points) mean += *x;
   mean /= static_cast<double>(points.size());
   Mat<D> cov = Mat<D>::Zero();
   for (const auto* x : points) cov += (*x - mean) * (*x - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(cov);
-  return eig.eigenvectors().col(0);
+  cov /= static_cast<double>(points.size());
+  const auto eigenvalues = Eigen::SelfAdjointEigenSolver<Mat<D>>(cov).eigenvalues();
+  return eigenvalues[1] >= 0.01 * h * h;  // 2D: along the curve; 3D: the narrower in-plane spread
 }
 
 }  // namespace
@@ -178,8 +242,15 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
     const long own = groups.count(g);
     LocalBasis<D> basis;
     std::vector<const Vec<D>*> fit;
-    const bool quadratic = basis_ == IsosurfaceBasis::quadratic ||
-                           (basis_ == IsosurfaceBasis::hybrid && own >= quadratic_threshold);
+    bool thin = false;
+    if (basis_ == IsosurfaceBasis::hybrid) {
+      for (const long* p = groups.begin(g); p != groups.end(g); ++p) fit.push_back(&x[*p]);
+      thin = !well_spread(fit, h);
+      fit.clear();
+    }
+    const bool quadratic =
+        basis_ == IsosurfaceBasis::quadratic ||
+        (basis_ == IsosurfaceBasis::hybrid && own >= quadratic_threshold && !thin);
     if (quadratic) {
       basis = {true, setup_.grid_origin, h, cell};
       for (const long* p = groups.begin(g); p != groups.end(g); ++p) fit.push_back(&x[*p]);
@@ -188,7 +259,7 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
       // around it that holds enough points, the fullest such block.
       int s = 1;
       IVec<D> lower = cell;
-      if (basis_ == IsosurfaceBasis::hybrid && own < linear_threshold) {
+      if (basis_ == IsosurfaceBasis::hybrid && (own < linear_threshold || thin)) {
         for (s = 2; s <= 4; ++s) {
           long best = -1;
           IVec<D> offset = IVec<D>::Zero();
@@ -205,7 +276,17 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
             }
             if (count > best) best = count, lower = corner;
           }
-          if (best >= linear_threshold) break;
+          std::vector<const Vec<D>*> block;
+          for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
+            IVec<D> inner;
+            int r = c;
+            for (int d = 0; d < D; ++d) inner[d] = lower[d] + r % s, r /= s;
+            const int other = groups.find(inner);
+            if (other >= 0)
+              for (const long* p = groups.begin(other); p != groups.end(other); ++p)
+                block.push_back(&x[*p]);
+          }
+          if (best >= linear_threshold && well_spread(block, h)) break;
         }
         s = std::min(s, 4);
       }
@@ -222,8 +303,13 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
     }
     std::mt19937 rng(setup_.seed ^ static_cast<unsigned>(CellGroups<D>::key(cell) * 2654435761u));
     Eigen::VectorXd chi;
-    conditions[g].push_back(
-        solve_chi(basis, fit, rng, basis_ == IsosurfaceBasis::mass_matrix, chi));
+    if (offset_) {
+      const auto extra = offset_points(basis, fit, h);
+      conditions[g].push_back(solve_chi(basis, fit, rng, false, chi, &extra));
+    } else {
+      conditions[g].push_back(
+          solve_chi(basis, fit, rng, basis_ == IsosurfaceBasis::mass_matrix, chi));
+    }
     std::vector<double> value(basis.unknowns());
     std::vector<Vec<D>> grad(basis.unknowns());
     for (const long* p = groups.begin(g); p != groups.end(g); ++p) {
@@ -268,6 +354,10 @@ std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& s
   return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::hybrid);
 }
 template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_offset(const FrameSetup<D>& setup) {
+  return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::hybrid, true);
+}
+template <int D>
 std::unique_ptr<FrameEstimator<D>> make_mass_matrix(const FrameSetup<D>& setup) {
   return std::make_unique<IsosurfaceEstimator<D>>(setup, IsosurfaceBasis::mass_matrix);
 }
@@ -280,6 +370,8 @@ template std::unique_ptr<FrameEstimator<2>> make_isosurface_quadratic<2>(const F
 template std::unique_ptr<FrameEstimator<3>> make_isosurface_quadratic<3>(const FrameSetup<3>&);
 template std::unique_ptr<FrameEstimator<2>> make_isosurface_hybrid<2>(const FrameSetup<2>&);
 template std::unique_ptr<FrameEstimator<3>> make_isosurface_hybrid<3>(const FrameSetup<3>&);
+template std::unique_ptr<FrameEstimator<2>> make_isosurface_offset<2>(const FrameSetup<2>&);
+template std::unique_ptr<FrameEstimator<3>> make_isosurface_offset<3>(const FrameSetup<3>&);
 template std::unique_ptr<FrameEstimator<2>> make_mass_matrix<2>(const FrameSetup<2>&);
 template std::unique_ptr<FrameEstimator<3>> make_mass_matrix<3>(const FrameSetup<3>&);
 

@@ -5,9 +5,12 @@
 //! the normal at a point is ∇χ there (eqs 11, 16).
 //!   linear:    bilinear/trilinear χ on the cell's 4 / 8 nodes (§3–4);
 //!   quadratic: quadratic B-splines centred on the 9 / 27 surrounding cell centres (§5–6);
-//!   hybrid:    the paper's §8 rule: quadratic when the cell holds enough points (2D: 7),
-//!              linear when it holds a few (2D: 3–6), and cells with fewer joined with
-//!              neighbours into 2×2 (2×2×2), 3×3 … blocks with linear χ until enough.
+//!   hybrid:    the paper's §8 rule: quadratic when the cell holds enough points (2D: 7,
+//!              3D: 26), linear when it holds a few (2D: 3–6, 3D: 7–25), and cells with fewer
+//!              — or whose points only graze the cell, too narrow to fix a normal — joined
+//!              with neighbours into 2×2 (2×2×2), 3×3 … blocks with linear χ until enough;
+//!   offset:    the hybrid rule with 2^(D−1) extra points half a cell to one side of the
+//!              points instead of one random point (not in the paper; see isosurface.cpp).
 //! Each small system is solved by a rank-revealing QR (minimum-norm when underdetermined),
 //! not the normal equations; when its condition number is too large the extra point is moved
 //! (up to 8 tries; §4). Where ∇χ vanishes the cell's points fall back to principal
@@ -33,8 +36,10 @@ struct IsosurfaceStatistics {
 template <int D>
 class IsosurfaceEstimator final : public FrameEstimator<D> {
  public:
-  IsosurfaceEstimator(const FrameSetup<D>& setup, IsosurfaceBasis basis)
-      : setup_(setup), basis_(basis) {}
+  //! `offset`: instead of the paper's one random point, 2^(D−1) points with χ = 0 placed
+  //! half a cell to one side of the cell's points (see isosurface.cpp).
+  IsosurfaceEstimator(const FrameSetup<D>& setup, IsosurfaceBasis basis, bool offset = false)
+      : setup_(setup), basis_(basis), offset_(offset) {}
   void estimate(const std::vector<Vec<D>>& position, long begin, long end,
                 std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override;
 
@@ -49,6 +54,7 @@ class IsosurfaceEstimator final : public FrameEstimator<D> {
  private:
   FrameSetup<D> setup_;
   IsosurfaceBasis basis_;
+  bool offset_;
   IsosurfaceStatistics statistics_;
 };
 
@@ -60,6 +66,9 @@ template <int D>
 std::unique_ptr<FrameEstimator<D>> make_isosurface_hybrid(const FrameSetup<D>& setup);
 template <int D>
 std::unique_ptr<FrameEstimator<D>> make_mass_matrix(const FrameSetup<D>& setup);
+//! The hybrid rule with the offset extra points instead of the random one.
+template <int D>
+std::unique_ptr<FrameEstimator<D>> make_isosurface_offset(const FrameSetup<D>& setup);
 
 extern template class IsosurfaceEstimator<2>;
 extern template class IsosurfaceEstimator<3>;

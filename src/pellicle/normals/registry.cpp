@@ -17,6 +17,8 @@ const std::vector<FrameEstimatorChoice<D>>& frame_estimators() {
        &make_isosurface_quadratic<D>},
       {"isosurface-hybrid", "quadratic, linear or joined cells by point count (§8)",
        &make_isosurface_hybrid<D>},
+      {"isosurface-offset", "the hybrid rule with extra points offset to one side",
+       &make_isosurface_offset<D>},
       {"mass-matrix", "linear isosurface through the normal equations (thesis §7.4)",
        &make_mass_matrix<D>},
       {"colour-simple", "gradient of the points' colour, linear (thesis §7.1)",

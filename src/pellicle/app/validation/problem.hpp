@@ -33,6 +33,7 @@ struct Series {
 struct Outcome {
   std::vector<Check> checks;
   std::vector<Series> series;
+  std::string table;  //!< optional markdown written into the report after the checks
 };
 
 struct Problem {
@@ -57,5 +58,6 @@ Outcome spring_mass(Resolution resolution);
 Outcome string_slack(Resolution resolution);
 Outcome drum(Resolution resolution);
 Outcome sphere_breathing(Resolution resolution);
+Outcome normals_accuracy(Resolution resolution);
 
 }  // namespace pellicle::validation

@@ -25,6 +25,8 @@ const std::vector<Problem>& problems() {
        "thesis §5.8; classical membrane theory", &drum},
       {"sphere-breathing", "Spherical membrane, breathing mode (3D curved membrane)",
        "thesis §5.8; membrane-shell theory", &sphere_breathing},
+      {"normals-accuracy", "Normals of whole closed curves and surfaces, every estimator",
+       "Sulsky & York 2000; thesis ch. 7", &normals_accuracy},
   };
   return list;
 }
