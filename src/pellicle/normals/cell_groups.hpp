@@ -2,6 +2,7 @@
 //! Membrane points grouped by the grid cell that holds them: the local normal constructions
 //! work cell by cell.
 
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -31,6 +32,29 @@ class CellGroups {
   long count_in(const IVec<D>& cell) const {
     const int g = find(cell);
     return g < 0 ? 0 : count(g);
+  }
+
+  //! Call f(group) for every occupied cell of the 3^D around `cell`, itself included.
+  template <class F>
+  void for_each_around(const IVec<D>& cell, F&& f) const {
+    for (int o = 0; o < (D == 2 ? 9 : 27); ++o) {
+      IVec<D> near = cell;
+      int rest = o;
+      for (int d = 0; d < D; ++d) near[d] += rest % 3 - 1, rest /= 3;
+      const int g = find(near);
+      if (g >= 0) f(g);
+    }
+  }
+  //! Call f(group) for every occupied cell of the block of s^D cells from `lower`.
+  template <class F>
+  void for_each_in_block(const IVec<D>& lower, int s, F&& f) const {
+    for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
+      IVec<D> inner;
+      int rest = c;
+      for (int d = 0; d < D; ++d) inner[d] = lower[d] + rest % s, rest /= s;
+      const int g = find(inner);
+      if (g >= 0) f(g);
+    }
   }
 
   static std::int64_t key(const IVec<D>& c) {

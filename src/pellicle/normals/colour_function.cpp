@@ -5,39 +5,12 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "pellicle/core/bspline.hpp"
 #include "pellicle/normals/cell_groups.hpp"
 
 namespace pellicle {
 
 namespace {
-
-//! 1D B-splines on unit spacing: first supporting node, weights and derivatives.
-int linear_spline(double xi, double* w, double* dw) {
-  const int base = static_cast<int>(std::floor(xi));
-  const double f = xi - base;
-  w[0] = 1 - f, w[1] = f, dw[0] = -1, dw[1] = 1;
-  return base;
-}
-int quadratic_spline(double xi, double* w, double* dw) {
-  const int base = static_cast<int>(std::floor(xi - 0.5));
-  const double f = xi - base;
-  w[0] = 0.5 * (1.5 - f) * (1.5 - f), w[1] = 0.75 - (f - 1) * (f - 1),
-  w[2] = 0.5 * (f - 0.5) * (f - 0.5);
-  dw[0] = f - 1.5, dw[1] = -2 * (f - 1), dw[2] = f - 0.5;
-  return base;
-}
-int cubic_spline(double xi, double* w, double* dw) {
-  const int base = static_cast<int>(std::floor(xi)) - 1;
-  const double f = xi - base, r1 = f - 1, r2 = 2 - f;
-  w[0] = (2 - f) * (2 - f) * (2 - f) / 6;
-  w[1] = 0.5 * r1 * r1 * r1 - r1 * r1 + 2.0 / 3;
-  w[2] = 0.5 * r2 * r2 * r2 - r2 * r2 + 2.0 / 3;
-  w[3] = (f - 1) * (f - 1) * (f - 1) / 6;
-  dw[0] = -0.5 * (2 - f) * (2 - f), dw[1] = 1.5 * r1 * r1 - 2 * r1,
-  dw[2] = -(1.5 * r2 * r2 - 2 * r2);
-  dw[3] = 0.5 * (f - 1) * (f - 1);
-  return base;
-}
 
 using Spline = int (*)(double, double*, double*);
 
@@ -80,40 +53,40 @@ class ColourFunction final : public FrameEstimator<D> {
     std::unordered_map<Key, double> colour;
     if (kind_ == Colour::simple) {  // eq 7.2
       for (long p = begin; p < end; ++p)
-        stencil<D, 2>(&linear_spline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
+        stencil<D, 2>(&linear_bspline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
           auto [it, fresh] = node_normal.try_emplace(CellGroups<D>::key(i), Vec<D>::Zero());
           it->second += g / h;
         });
     } else if (kind_ == Colour::quadratic) {  // eqs 7.4–7.5: cell centres at integer ξ − ½
       std::unordered_map<Key, IVec<D>> where;
       for (long p = begin; p < end; ++p)
-        stencil<D, 3>(&quadratic_spline, Vec<D>(xi(p) - Vec<D>::Constant(0.5)),
+        stencil<D, 3>(&quadratic_bspline, Vec<D>(xi(p) - Vec<D>::Constant(0.5)),
                       [&](const IVec<D>& c, double N, const Vec<D>&) {
                         colour[CellGroups<D>::key(c)] += N;
                         where[CellGroups<D>::key(c)] = c;
                       });
       for (const auto& [key, c] : where) {  // ∇N_i at the centre of cell c, for its corners
         const Vec<D> centre = c.template cast<double>() + Vec<D>::Constant(0.5);
-        stencil<D, 2>(&linear_spline, centre, [&](const IVec<D>& i, double, const Vec<D>& g) {
+        stencil<D, 2>(&linear_bspline, centre, [&](const IVec<D>& i, double, const Vec<D>& g) {
           auto [it, fresh] = node_normal.try_emplace(CellGroups<D>::key(i), Vec<D>::Zero());
           it->second += colour[key] * g / h;
         });
       }
     } else {  // eq 7.6: node colours with cubic B-splines
       for (long p = begin; p < end; ++p)
-        stencil<D, 4>(&cubic_spline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
+        stencil<D, 4>(&cubic_bspline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
           colour[CellGroups<D>::key(i)] += N;
         });
     }
     for (long p = begin; p < end; ++p) {
       Vec<D> n = Vec<D>::Zero();
       if (kind_ == Colour::cubic) {  // eq 7.7
-        stencil<D, 4>(&cubic_spline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
+        stencil<D, 4>(&cubic_bspline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
           const auto it = colour.find(CellGroups<D>::key(i));
           if (it != colour.end()) n += it->second * g / h;
         });
       } else {  // eq 7.3
-        stencil<D, 2>(&linear_spline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
+        stencil<D, 2>(&linear_bspline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
           const auto it = node_normal.find(CellGroups<D>::key(i));
           if (it != node_normal.end()) n += N * it->second;
         });
@@ -144,12 +117,7 @@ class PrincipalComponents final : public FrameEstimator<D> {
       double weight = 0.0;
       Vec<D> mean = Vec<D>::Zero();
       Mat<D> second = Mat<D>::Zero();
-      for (int o = 0; o < (D == 2 ? 9 : 27); ++o) {
-        IVec<D> near = c;
-        int rest = o;
-        for (int d = 0; d < D; ++d) near[d] += rest % 3 - 1, rest /= 3;
-        const int g = groups.find(near);
-        if (g < 0) continue;
+      groups.for_each_around(c, [&](int g) {
         for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
           const double s = (x[*q] - x[p]).squaredNorm() / (r * r);
           if (s >= 1.0) continue;
@@ -158,7 +126,7 @@ class PrincipalComponents final : public FrameEstimator<D> {
           mean += w * x[*q];
           second += w * x[*q] * x[*q].transpose();
         }
-      }
+      });
       mean /= weight;
       const Mat<D> covariance = second / weight - mean * mean.transpose();
       const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(covariance);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "pellicle/core/bspline.hpp"
 #include "pellicle/normals/cell_groups.hpp"
 
 namespace pellicle {
@@ -14,20 +15,6 @@ namespace {
 
 constexpr int kTries = 8;              //!< placements of the extra point before giving up
 constexpr double kMaxCondition = 1e6;  //!< of A, i.e. 1e12 for the normal equations
-
-//! Quadratic B-spline on unit spacing: for ξ, the first of the three supporting centres and
-//! their weights and derivatives (paper §5, s̄⁽²⁾).
-int quadratic_bspline(double xi, double* w, double* dw) {
-  const int base = static_cast<int>(std::floor(xi - 0.5));
-  const double f = xi - base;  // in [0.5, 1.5)
-  w[0] = 0.5 * (1.5 - f) * (1.5 - f);
-  w[1] = 0.75 - (f - 1.0) * (f - 1.0);
-  w[2] = 0.5 * (f - 0.5) * (f - 0.5);
-  dw[0] = f - 1.5;
-  dw[1] = -2.0 * (f - 1.0);
-  dw[2] = f - 0.5;
-  return base;
-}
 
 //! The local interpolant: linear on a block of s^D cells (its 2^D corners), or quadratic
 //! B-splines on the 3^D cell centres around one cell.
@@ -240,6 +227,12 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
   for (int g = 0; g < groups.size(); ++g) {
     const IVec<D> cell = groups.cell(g);
     const long own = groups.count(g);
+    auto gather = [&](const IVec<D>& lower, int s, std::vector<const Vec<D>*>& out) {
+      groups.for_each_in_block(lower, s, [&](int other) {
+        for (const long* p = groups.begin(other); p != groups.end(other); ++p)
+          out.push_back(&x[*p]);
+      });
+    };
     LocalBasis<D> basis;
     std::vector<const Vec<D>*> fit;
     bool thin = false;
@@ -266,40 +259,19 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
           for (int o = 0; o < static_cast<int>(std::pow(s, D)); ++o) {
             int rest = o;
             for (int d = 0; d < D; ++d) offset[d] = rest % s, rest /= s;
-            const IVec<D> corner = cell - offset;
             long count = 0;
-            for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
-              IVec<D> inner;
-              int r = c;
-              for (int d = 0; d < D; ++d) inner[d] = corner[d] + r % s, r /= s;
-              count += groups.count_in(inner);
-            }
-            if (count > best) best = count, lower = corner;
+            groups.for_each_in_block(cell - offset, s,
+                                     [&](int other) { count += groups.count(other); });
+            if (count > best) best = count, lower = cell - offset;
           }
           std::vector<const Vec<D>*> block;
-          for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
-            IVec<D> inner;
-            int r = c;
-            for (int d = 0; d < D; ++d) inner[d] = lower[d] + r % s, r /= s;
-            const int other = groups.find(inner);
-            if (other >= 0)
-              for (const long* p = groups.begin(other); p != groups.end(other); ++p)
-                block.push_back(&x[*p]);
-          }
+          gather(lower, s, block);
           if (best >= linear_threshold && well_spread(block, h)) break;
         }
         s = std::min(s, 4);
       }
       basis = {false, setup_.grid_origin + h * lower.template cast<double>(), s * h, lower};
-      for (int c = 0; c < static_cast<int>(std::pow(s, D)); ++c) {
-        IVec<D> inner;
-        int r = c;
-        for (int d = 0; d < D; ++d) inner[d] = lower[d] + r % s, r /= s;
-        const int other = groups.find(inner);
-        if (other >= 0)
-          for (const long* p = groups.begin(other); p != groups.end(other); ++p)
-            fit.push_back(&x[*p]);
-      }
+      gather(lower, s, fit);
     }
     std::mt19937 rng(setup_.seed ^ static_cast<unsigned>(CellGroups<D>::key(cell) * 2654435761u));
     Eigen::VectorXd chi;

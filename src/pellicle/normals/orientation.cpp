@@ -28,12 +28,7 @@ void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::ve
       queue.pop_front();
       IVec<D> c;
       for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
-      for (int o = 0; o < (D == 2 ? 9 : 27); ++o) {
-        IVec<D> near = c;
-        int rest = o;
-        for (int d = 0; d < D; ++d) near[d] += rest % 3 - 1, rest /= 3;
-        const int g = groups.find(near);
-        if (g < 0) continue;
+      groups.for_each_around(c, [&](int g) {
         for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
           if (visited[*q - begin] || fixed[*q - begin]) continue;
           if ((x[*q] - x[p]).squaredNorm() > cell * cell) continue;
@@ -41,7 +36,7 @@ void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::ve
           visited[*q - begin] = 1;
           queue.push_back(*q);
         }
-      }
+      });
     }
   }
 }

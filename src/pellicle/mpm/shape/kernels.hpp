@@ -9,6 +9,8 @@
 
 #include <cmath>
 
+#include "pellicle/core/bspline.hpp"
+
 namespace pellicle::shape {
 
 //! Linear tent (bilinear/trilinear FE basis), the kernel of the seeds. Support 2 nodes.
@@ -17,15 +19,7 @@ struct Linear {
   static constexpr const char* name = "linear";
   //! APIC uses the gradient form C = Σ v_i ⊗ ∇N_i for this kernel (see docs/theory).
   static constexpr double apic_inertia = 0.0;
-  inline int fill(double xi, double* w, double* dw) const {
-    const int base = static_cast<int>(std::floor(xi));
-    const double f = xi - base;
-    w[0] = 1.0 - f;
-    w[1] = f;
-    dw[0] = -1.0;
-    dw[1] = 1.0;
-    return base;
-  }
+  inline int fill(double xi, double* w, double* dw) const { return linear_bspline(xi, w, dw); }
 };
 
 //! Uniform GIMP: the tent convolved with a particle characteristic function of half-width
@@ -69,17 +63,7 @@ struct QuadraticBSpline {
   static constexpr int width = 3;
   static constexpr const char* name = "quadratic-bspline";
   static constexpr double apic_inertia = 0.25;
-  inline int fill(double xi, double* w, double* dw) const {
-    const int base = static_cast<int>(std::floor(xi - 0.5));
-    const double f = xi - base;  // in [0.5, 1.5)
-    w[0] = 0.5 * (1.5 - f) * (1.5 - f);
-    w[1] = 0.75 - (f - 1.0) * (f - 1.0);
-    w[2] = 0.5 * (f - 0.5) * (f - 0.5);
-    dw[0] = f - 1.5;
-    dw[1] = -2.0 * (f - 1.0);
-    dw[2] = f - 0.5;
-    return base;
-  }
+  inline int fill(double xi, double* w, double* dw) const { return quadratic_bspline(xi, w, dw); }
 };
 
 //! Cubic B-spline centred on nodes. Support 4 nodes. Inertia tensor D = h²/3 I.
@@ -87,21 +71,7 @@ struct CubicBSpline {
   static constexpr int width = 4;
   static constexpr const char* name = "cubic-bspline";
   static constexpr double apic_inertia = 1.0 / 3.0;
-  inline int fill(double xi, double* w, double* dw) const {
-    const int base = static_cast<int>(std::floor(xi)) - 1;
-    const double f = xi - base;  // in [1, 2): distances to nodes f, f-1, 2-f... see below
-    const double r0 = f, r1 = f - 1.0, r2 = 2.0 - f, r3 = 3.0 - f;  // |ξ − node|
-    w[0] = (2.0 - r0) * (2.0 - r0) * (2.0 - r0) / 6.0;
-    w[1] = 0.5 * r1 * r1 * r1 - r1 * r1 + 2.0 / 3.0;
-    w[2] = 0.5 * r2 * r2 * r2 - r2 * r2 + 2.0 / 3.0;
-    w[3] = (2.0 - r3) * (2.0 - r3) * (2.0 - r3) / 6.0;
-    // d/dξ: nodes 0,1 lie below ξ (r grows with ξ), nodes 2,3 above (r shrinks).
-    dw[0] = -0.5 * (2.0 - r0) * (2.0 - r0);
-    dw[1] = 1.5 * r1 * r1 - 2.0 * r1;
-    dw[2] = -(1.5 * r2 * r2 - 2.0 * r2);
-    dw[3] = 0.5 * (2.0 - r3) * (2.0 - r3);
-    return base;
-  }
+  inline int fill(double xi, double* w, double* dw) const { return cubic_bspline(xi, w, dw); }
 };
 
 }  // namespace pellicle::shape
