@@ -89,13 +89,14 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
       problems.push_back({b.where, "body.initial_strain.points",
                           "body '" + b.name + "': no point " + std::to_string(last) + " (it has " +
                               std::to_string(positions.size()) + ")"});
+    const double density = b.density.value_or(material.density());
     for (std::size_t i = 0; i < positions.size(); ++i) {
       const auto& [x, volume] = positions[i];
-      const double m = material.density() * volume;
       const long index = static_cast<long>(i);
       const bool initial = index >= b.initial_points.first && index <= last;
-      points.add(x, b.velocity, m, material.density(), initial ? stress : Sym<D>::Zero(),
+      points.add(x, b.velocity, density * volume, density, initial ? stress : Sym<D>::Zero(),
                  initial ? strain : Sym<D>::Zero());
+      points.energy.back() = b.internal_energy;
     }
     auto& body = points.bodies.back();
     // Point masses given explicitly (an end mass on a string) keep their point's volume.

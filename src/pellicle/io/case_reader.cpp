@@ -339,6 +339,16 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
           b.point_masses.emplace_back(static_cast<long>(entry[0]), entry[1]);
       }
     }
+    if (t->has("density")) b.density = t->number("density", NumberRange::positive());
+    if (t->has("internal_energy")) {
+      b.internal_energy = t->number("internal_energy", NumberRange::non_negative());
+      const bool fluid = b.material < static_cast<int>(c.materials.size()) &&
+                         c.materials[b.material] && c.materials[b.material]->is_fluid();
+      if (!fluid)
+        t->fail("internal_energy",
+                "only fluid bodies (model \"gas\", \"barotropic-liquid\", \"tait-liquid\") "
+                "carry an internal energy");
+    }
     if (t->has("initial_stress") && b.membrane)
       t->fail("initial_stress", "membranes take initial_strain (their stress follows from it)");
     if (t->has("initial_stress") && t->has("initial_strain"))

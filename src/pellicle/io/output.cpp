@@ -76,6 +76,9 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
     for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".com_" << axis_names[d];
     for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".vel_" << axis_names[d];
   }
+  for (const auto& b : simulation.points().bodies)
+    if (simulation.material(b.material).is_fluid())
+      history_ << ',' << b.name << ".pressure," << b.name << ".volume";
   for (const auto& probe : probes_)
     for (const auto& column : probe.columns()) history_ << ',' << column;
   history_ << '\n' << std::setprecision(12);
@@ -97,6 +100,13 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     const Vec<D> vel = body_sum(p, b, true, mass) / mass;
     for (int d = 0; d < D; ++d) history_ << ',' << com[d];
     for (int d = 0; d < D; ++d) history_ << ',' << vel[d];
+  }
+  for (const auto& b : p.bodies) {
+    const Material<D>& material = simulation.material(b.material);
+    if (!material.is_fluid()) continue;
+    double volume = 0.0;
+    for (long i = b.begin; i < b.end; ++i) volume += p.volume[i];
+    history_ << ',' << material.mean_pressure(p, b.begin, b.end) << ',' << volume;
   }
   for (const auto& probe : probes_)
     for (double v : probe.values(simulation)) history_ << ',' << v;

@@ -73,6 +73,13 @@ bool has_membranes(const Simulation<D>& s) {
   return false;
 }
 
+template <int D>
+bool has_fluids(const Simulation<D>& s) {
+  for (const auto& b : s.points().bodies)
+    if (s.material(b.material).is_fluid()) return true;
+  return false;
+}
+
 //! Membrane points: frame, and strain and stress in the local axes (11 tangent, 22 second
 //! in-surface direction, 12 in-surface shear); zero for other points.
 template <int D>
@@ -141,6 +148,7 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
   data_array(out, "Float64", "von_mises", 1, von_mises);
   data_array(out, "Int32", "body", 1, body);
   if (has_membranes(simulation)) write_membrane_fields(out, simulation);
+  if (has_fluids(simulation)) data_array(out, "Float64", "internal_energy", 1, p.energy);
   out += "</PointData>\n<Cells>\n";
   data_array(out, "Int32", "connectivity", 1, connectivity);
   data_array(out, "Int32", "offsets", 1, offsets);

@@ -32,6 +32,7 @@ struct Particles {
   std::vector<double> density;  //!< current density, updated by continuity (IJNME eq 17)
   std::vector<Sym<D>> stress;   //!< Cauchy stress
   std::vector<Sym<D>> strain;   //!< accumulated small strain Σ Δε
+  std::vector<double> energy;   //!< specific internal energy e (fluids; 0 for solids)
   std::vector<Mat<D>> affine;   //!< APIC affine velocity C_p (only sized when APIC is used)
   std::vector<Vec<D>> normal;   //!< membrane points: unit normal of the local frame (else 0)
   std::vector<Vec<D>> tangent;  //!< membrane points: unit tangent (3D: t1; t2 = n × t1)
@@ -50,6 +51,7 @@ struct Particles {
     volume.push_back(m / rho);
     stress.push_back(s);
     strain.push_back(e);
+    energy.push_back(0.0);
     normal.push_back(Vec<D>::Zero());
     tangent.push_back(Vec<D>::Zero());
     body.push_back(static_cast<int>(bodies.size()) - 1);

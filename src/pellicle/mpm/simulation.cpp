@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/mpm/cell_density.hpp"
 
 namespace pellicle {
 
@@ -29,15 +30,21 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
     has_rigid_bodies_ = true;
     rigid_velocity_[b] = points_.velocity[points_.bodies[b].begin];
   }
-  // Membrane stresses follow from their strains in their frames: settle them once before
-  // the first step (a zero step changes nothing else).
+  for (const auto& body : points_.bodies)
+    if (materials_[body.material]->density_from_cells())
+      cell_density_ranges_.emplace_back(body.begin, body.end);
+  // Membrane stresses follow from their strains in their frames, fluid stresses from their
+  // density and energy: settle them once before the first step (a zero step changes nothing
+  // else).
   update_frames();
   velocity_gradient_.assign(points_.size(), Mat<D>::Zero());
   if (settings_.kinematics == Kinematics::axisymmetric) hoop_rate_.assign(points_.size(), 0.0);
-  for (const auto& body : points_.bodies)
-    if (materials_[body.material]->is_membrane())
-      materials_[body.material]->update(
-          {points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end});
+  for (const auto& body : points_.bodies) {
+    const auto& material = *materials_[body.material];
+    if (material.is_membrane() || material.is_fluid())
+      material.update(
+          {points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end, grid_.cell()});
+  }
 }
 
 template <int D>
@@ -126,7 +133,8 @@ long Simulation<D>::fastest_point() const {
   long fastest = 0;
   double top = -1.0;
   for (const auto& body : points_.bodies) {
-    const double c = materials_[body.material]->max_wave_speed(points_, body.begin, body.end);
+    const double c =
+        materials_[body.material]->max_signal_speed(points_, body.begin, body.end, grid_.cell());
     for (long p = body.begin; p < body.end; ++p) {
       const double s = c + points_.velocity[p].norm();
       if (s > top) top = s, fastest = p;
@@ -149,7 +157,8 @@ template <int D>
 double Simulation<D>::max_signal_speed() const {
   double wave = 0.0;
   for (const auto& body : points_.bodies)
-    wave = std::max(wave, materials_[body.material]->max_wave_speed(points_, body.begin, body.end));
+    wave = std::max(wave, materials_[body.material]->max_signal_speed(points_, body.begin, body.end,
+                                                                      grid_.cell()));
   return wave + max_speed_;
 }
 
@@ -171,10 +180,16 @@ template <int D>
 void Simulation<D>::update_materials(double dt) {
   const long bad = transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
   if (bad >= 0) fail(bad, "non-positive or non-finite density");
+  if (!cell_density_ranges_.empty())  // fluids with cell densities (thesis eq 4.6)
+    cell_quadratic_density(grid_, settings_.kinematics == Kinematics::axisymmetric,
+                           cell_density_ranges_, points_);
   update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
   for (const auto& body : points_.bodies) {
-    const MaterialStep<D> step{points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end};
-    materials_[body.material]->update(step);
+    const auto& material = *materials_[body.material];
+    material.update(
+        {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid_.cell()});
+    const long invalid = material.first_invalid_point(points_, body.begin, body.end);
+    if (invalid >= 0) fail(invalid, "non-finite or negative specific internal energy");
   }
 }
 
@@ -194,8 +209,10 @@ SystemState<D> Simulation<D>::state() const {
   s.kinetic = kinetic + transfer_->affine_kinetic_energy(points_, grid_);
   s.gravitational = gravitational;
   for (int d = 0; d < D; ++d) s.momentum[d] = momentum[d];
-  for (const auto& body : points_.bodies)
+  for (const auto& body : points_.bodies) {
     s.strain += materials_[body.material]->strain_energy(points_, body.begin, body.end);
+    s.internal += materials_[body.material]->internal_energy(points_, body.begin, body.end);
+  }
   return s;
 }
 

@@ -107,6 +107,8 @@ class Simulation {
 
   bool has_rigid_bodies_ = false;
   std::vector<Vec<D>> rigid_velocity_;  //!< per body: the prescribed velocity of rigid ones
+  //! Point ranges of fluids whose densities come from cell densities.
+  std::vector<std::pair<long, long>> cell_density_ranges_;
   std::vector<Mat<D>> velocity_gradient_;
   std::vector<double> hoop_rate_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;

@@ -41,7 +41,9 @@ Run oscillate(double dt_factor, double end_time) {
       {dt, "solver.cfl_limit=3", "solver.end_time=" + std::to_string(end_time)});
   const long end_point = s->points().bodies[0].end - 1;
   const double y0 = s->points().position[end_point].y(), e0 = s->state().total();
-  Run run{{0.0}, {0.0}};
+  Run run;
+  run.t = {0.0};
+  run.y = {0.0};
   try {
     while (!s->finished()) {
       s->step();

@@ -21,7 +21,8 @@ class LinearElastic final : public Material<D> {
   LinearElastic(Kinematics kinematics, double density, double youngs_modulus, double poisson_ratio);
 
   void update(const MaterialStep<D>& step) const override;
-  double max_wave_speed(const Particles<D>& points, long begin, long end) const override;
+  double max_signal_speed(const Particles<D>& points, long begin, long end,
+                          double cell) const override;
   double strain_energy(const Particles<D>& points, long begin, long end) const override;
   Sym<D> stress_from_strain(const Sym<D>& strain) const override;
   double density() const override { return density_; }

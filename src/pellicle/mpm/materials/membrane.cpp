@@ -100,7 +100,8 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
 }
 
 template <int D>
-double Membrane<D>::max_wave_speed(const Particles<D>& points, long begin, long end) const {
+double Membrane<D>::max_signal_speed(const Particles<D>& points, long begin, long end,
+                                     double /*cell*/) const {
   return std::sqrt(wave_modulus() / smallest_density(points, begin, end, density_));
 }
 

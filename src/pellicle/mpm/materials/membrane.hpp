@@ -44,7 +44,8 @@ class Membrane final : public Material<D> {
            MembraneLaw law, bool one_way);
 
   void update(const MaterialStep<D>& step) const override;
-  double max_wave_speed(const Particles<D>& points, long begin, long end) const override;
+  double max_signal_speed(const Particles<D>& points, long begin, long end,
+                          double cell) const override;
   double strain_energy(const Particles<D>& points, long begin, long end) const override;
   //! A membrane's stress depends on its frame: it is set by the first update (zero here).
   Sym<D> stress_from_strain(const Sym<D>& strain) const override;

@@ -1,4 +1,5 @@
 //! The material registry: adding a model is one new file and one line here.
+#include "pellicle/mpm/materials/fluid.hpp"
 #include "pellicle/mpm/materials/linear_elastic.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/materials/membrane.hpp"
@@ -15,6 +16,11 @@ const std::vector<MaterialModel<D>>& material_models() {
        &make_membrane<D>},
       {"rigid", "rigid body with a prescribed constant velocity; imposes it on its nodes",
        &make_rigid<D>},
+      {"gas", "compressible viscous ideal gas with energy equation (thesis ch. 4, eqs 4.1–4.12)",
+       &make_gas<D>},
+      {"barotropic-liquid", "compressible liquid p = −β tr ε (thesis eq 6.1)",
+       &make_barotropic_liquid<D>},
+      {"tait-liquid", "compressible liquid p = K0/n [(ρ/ρ0)^n − 1] (Tait)", &make_tait_liquid<D>},
   };
   return models;
 }

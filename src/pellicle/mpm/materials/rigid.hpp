@@ -18,7 +18,7 @@ class Rigid final : public Material<D> {
  public:
   Rigid(Kinematics kinematics, double density) : Material<D>(kinematics), density_(density) {}
   void update(const MaterialStep<D>&) const override {}
-  double max_wave_speed(const Particles<D>&, long, long) const override { return 0.0; }
+  double max_signal_speed(const Particles<D>&, long, long, double) const override { return 0.0; }
   double strain_energy(const Particles<D>&, long, long) const override { return 0.0; }
   Sym<D> stress_from_strain(const Sym<D>&) const override { return Sym<D>::Zero(); }
   double density() const override { return density_; }

@@ -1,0 +1,188 @@
+#include "pellicle/mpm/materials/fluid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pellicle/mpm/materials/kinematics.hpp"
+
+namespace pellicle {
+
+template <int D, class Eos>
+Fluid<D, Eos>::Fluid(Kinematics kinematics, double density, Eos eos, FluidViscosity viscosity,
+                     bool density_from_cells)
+    : Material<D>(kinematics),
+      density_(density),
+      eos_(eos),
+      viscosity_(viscosity),
+      from_cells_(density_from_cells) {}
+
+template <int D, class Eos>
+void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
+  auto& pts = step.points;
+  const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
+  const double gruneisen = eos_.gruneisen();
+  const double inv_dt = step.dt > 0.0 ? 1.0 / step.dt : 0.0;
+#pragma omp parallel for schedule(static)
+  for (long p = step.begin; p < step.end; ++p) {
+    const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
+                                          axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
+    const double dv = trace<D>(de);  // ΔV/V over the step
+    const double rho_new = pts.density[p];
+    const double rho_old = rho_new * (1.0 + dv);  // continuity (eq 4.7) run backwards
+    const double strain_old = trace<D>(pts.strain[p]);
+    const double e_old = pts.energy[p];
+    const double p_old = eos_.cold_pressure(rho_old, strain_old) + gruneisen * rho_old * e_old;
+    pts.strain[p] += de;
+
+    // Viscous stress 2μ D' and artificial viscosity q at the new rate (eqs 4.1, 4.11–4.12).
+    Sym<D> deviatoric = de;
+    deviatoric.template head<3>().array() -= dv / 3.0;
+    const Sym<D> viscous = (2.0 * viscosity_.shear * inv_dt) * deviatoric;
+    const double c_old = std::sqrt(eos_.sound_speed_squared(rho_old, p_old));
+    const double q = artificial_viscosity(rho_new, c_old, dv * inv_dt, step.cell);
+
+    // Energy (eqs 4.8–4.10), Δe = (V^n/m) σ̄ : Δε with the pressure centred in time and
+    // p^{n+1} = p_c(ρ^{n+1}) + Γ ρ^{n+1} e^{n+1}: linear in e^{n+1}.
+    const double specific_dv = dv / rho_old;  // ΔV/m
+    const double dissipation = (contract<D>(viscous, de) - q * dv) / rho_old;
+    const double p_cold = eos_.cold_pressure(rho_new, strain_old + dv);
+    const double e_new = (e_old + dissipation - 0.5 * (p_old + p_cold) * specific_dv) /
+                         (1.0 + 0.5 * gruneisen * rho_new * specific_dv);
+    pts.energy[p] = e_new;
+    const double p_new = p_cold + gruneisen * rho_new * e_new;
+
+    Sym<D> sigma = viscous;
+    sigma.template head<3>().array() -= p_new + q;
+    pts.stress[p] = sigma;
+  }
+}
+
+template <int D, class Eos>
+double Fluid<D, Eos>::max_signal_speed(const Particles<D>& points, long begin, long end,
+                                       double cell) const {
+  // Stable step of a viscous element: Δt ≤ h / (Q + sqrt(Q² + c²)), Q the viscous speed
+  // (docs/theory/gas.md). q is recovered from the stored stress, q = −tr σ/3 − p.
+  double fastest = 0.0;
+#pragma omp parallel for reduction(max : fastest) schedule(static)
+  for (long p = begin; p < end; ++p) {
+    const double rho = points.density[p];
+    const double pressure_p = pressure(points, p);
+    const double c = std::sqrt(eos_.sound_speed_squared(rho, pressure_p));
+    const double q = std::max(0.0, -trace<D>(points.stress[p]) / 3.0 - pressure_p);
+    const double c1c = viscosity_.linear * c;
+    double Q = 0.5 * (c1c + std::sqrt(c1c * c1c + 4.0 * viscosity_.quadratic * q / rho));
+    if (cell > 0.0) Q += D * (4.0 / 3.0) * viscosity_.shear / (rho * cell);
+    fastest = std::max(fastest, Q + std::sqrt(Q * Q + c * c));
+  }
+  return fastest;
+}
+
+template <int D, class Eos>
+long Fluid<D, Eos>::first_invalid_point(const Particles<D>& points, long begin, long end) const {
+  // A gas's pressure is Γ ρ e: negative energy would make it pull.
+  const bool thermal = eos_.gruneisen() > 0.0;
+  long first = end;
+#pragma omp parallel for reduction(min : first) schedule(static)
+  for (long p = begin; p < end; ++p) {
+    const double e = points.energy[p];
+    if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);
+  }
+  return first < end ? first : -1;
+}
+
+template <int D, class Eos>
+double Fluid<D, Eos>::internal_energy(const Particles<D>& points, long begin, long end) const {
+  double energy = 0.0;
+#pragma omp parallel for reduction(+ : energy) schedule(static)
+  for (long p = begin; p < end; ++p) energy += points.mass[p] * points.energy[p];
+  return energy;
+}
+
+template <int D, class Eos>
+double Fluid<D, Eos>::mean_pressure(const Particles<D>& points, long begin, long end) const {
+  double pv = 0.0, v = 0.0;
+#pragma omp parallel for reduction(+ : pv, v) schedule(static)
+  for (long p = begin; p < end; ++p) {
+    pv += points.volume[p] * pressure(points, p);
+    v += points.volume[p];
+  }
+  return v > 0.0 ? pv / v : 0.0;
+}
+
+template <int D, class Eos>
+Sym<D> Fluid<D, Eos>::stress_from_strain(const Sym<D>& strain) const {
+  Sym<D> sigma = Sym<D>::Zero();
+  sigma.template head<3>().array() = -eos_.cold_pressure(density_, trace<D>(strain));
+  return sigma;
+}
+
+namespace {
+
+//! Keys every fluid shares: density, viscosity, artificial viscosity, density update.
+struct FluidKeys {
+  double density;
+  FluidViscosity viscosity;
+  bool from_cells;
+};
+
+FluidKeys read_fluid_keys(ParameterReader& in, Kinematics kinematics) {
+  if (kinematics == Kinematics::plane_stress)
+    in.fail("model",
+            "a fluid needs grid.kinematics = \"plane-strain\", \"axisymmetric\" or a 3D grid "
+            "(plane stress has no meaning for a fluid)");
+  FluidKeys k;
+  k.density = in.number("density", NumberRange::positive());
+  k.viscosity.shear = in.number_or("viscosity", 0.0, NumberRange::non_negative());
+  if (in.has("artificial_viscosity")) {
+    auto q = in.table("artificial_viscosity");
+    k.viscosity.linear = q->number_or("linear", 0.0, NumberRange::non_negative());
+    k.viscosity.quadratic = q->number_or("quadratic", 0.0, NumberRange::non_negative());
+  }
+  k.from_cells = in.choice("density_update", {"continuity", "cell-quadratic"}, "continuity") ==
+                 "cell-quadratic";
+  return k;
+}
+
+template <int D, class Eos>
+std::unique_ptr<Material<D>> make_fluid(const FluidKeys& k, Eos eos, Kinematics kinematics) {
+  return std::make_unique<Fluid<D, Eos>>(kinematics, k.density, eos, k.viscosity, k.from_cells);
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Material<D>> make_gas(ParameterReader& in, Kinematics kinematics) {
+  const FluidKeys k = read_fluid_keys(in, kinematics);
+  const double gamma = in.number("gamma", {1.0, 1e308, true, false});
+  return make_fluid<D>(k, IdealGas{gamma}, kinematics);
+}
+
+template <int D>
+std::unique_ptr<Material<D>> make_barotropic_liquid(ParameterReader& in, Kinematics kinematics) {
+  const FluidKeys k = read_fluid_keys(in, kinematics);
+  const double beta = in.number("bulk_modulus", NumberRange::positive());
+  return make_fluid<D>(k, BarotropicLiquid{beta}, kinematics);
+}
+
+template <int D>
+std::unique_ptr<Material<D>> make_tait_liquid(ParameterReader& in, Kinematics kinematics) {
+  const FluidKeys k = read_fluid_keys(in, kinematics);
+  const double bulk = in.number("bulk_modulus", NumberRange::positive());
+  const double n = in.number_or("exponent", 7.0, NumberRange::positive());
+  return make_fluid<D>(k, TaitLiquid{k.density, bulk, n}, kinematics);
+}
+
+template class Fluid<2, IdealGas>;
+template class Fluid<3, IdealGas>;
+template class Fluid<2, BarotropicLiquid>;
+template class Fluid<3, BarotropicLiquid>;
+template class Fluid<2, TaitLiquid>;
+template class Fluid<3, TaitLiquid>;
+template std::unique_ptr<Material<2>> make_gas<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_gas<3>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<2>> make_barotropic_liquid<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_barotropic_liquid<3>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<2>> make_tait_liquid<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_tait_liquid<3>(ParameterReader&, Kinematics);
+
+}  // namespace pellicle
