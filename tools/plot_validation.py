@@ -22,19 +22,41 @@ def plot(path: pathlib.Path) -> pathlib.Path:
     if not data:
         raise ValueError("no data rows")
     columns = list(zip(*data))
-    fig, ax = plt.subplots(figsize=(8, 4.5))
-    for name, values in zip(header[1:], columns[1:]):
-        style = "--" if name in ("exact", "modal solution") else "-"
-        ax.plot(columns[0], values, style, label=name, linewidth=1.2)
-    ax.set_xlabel(header[0])
-    ax.set_title(title)
-    ax.grid(alpha=0.3)
-    ax.legend()
+    if any(name.startswith("exact ") for name in header):
+        fig = plot_panels(title, header, columns)
+    else:
+        fig, ax = plt.subplots(figsize=(8, 4.5))
+        for name, values in zip(header[1:], columns[1:]):
+            style = "--" if name in ("exact", "modal solution") else "-"
+            ax.plot(columns[0], values, style, label=name, linewidth=1.2)
+        ax.set_xlabel(header[0])
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+        ax.legend()
     out = path.with_suffix(".png")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
     return out
+
+
+def plot_panels(title, header, columns):
+    """One panel per quantity q that has an `exact q` column: computed values as dots, the
+    exact solution as a line."""
+    quantities = [h for h in header[1:] if f"exact {h}" in header]
+    rows = (len(quantities) + 1) // 2
+    fig, axes = plt.subplots(rows, 2, figsize=(10, 3.2 * rows), squeeze=False)
+    for ax, q in zip(axes.flat, quantities):
+        ax.plot(columns[0], columns[header.index(q)], ".", markersize=3, label="MPM")
+        ax.plot(columns[0], columns[header.index(f"exact {q}")], "k-", linewidth=1, label="exact")
+        ax.set_xlabel(header[0])
+        ax.set_ylabel(q)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    for ax in list(axes.flat)[len(quantities):]:
+        ax.set_visible(False)
+    fig.suptitle(title)
+    return fig
 
 
 def main() -> int:

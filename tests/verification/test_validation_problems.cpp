@@ -10,6 +10,7 @@
 //   drum             3D membrane: fundamental period within 3%, error falling with refinement
 //   sphere-breathing 3D curved membrane: breathing period within 2%
 //   normals-accuracy every frame estimator on whole curves and surfaces
+//   sod              thesis §4.1: shock position, pressure ratio, speed within 3%; L1 falling
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -56,6 +57,9 @@ TEST(Validation, Drum) {
 }
 TEST(Validation, SphereBreathing) {
   expect_all_checks_pass("sphere-breathing");
+}
+TEST(Validation, SodShockTube) {
+  expect_all_checks_pass("sod");
 }
 TEST(Validation, NormalsAccuracy) {
   expect_all_checks_pass("normals-accuracy");

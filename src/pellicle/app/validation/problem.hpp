@@ -59,5 +59,6 @@ Outcome string_slack(Resolution resolution);
 Outcome drum(Resolution resolution);
 Outcome sphere_breathing(Resolution resolution);
 Outcome normals_accuracy(Resolution resolution);
+Outcome sod(Resolution resolution);
 
 }  // namespace pellicle::validation

@@ -27,6 +27,8 @@ const std::vector<Problem>& problems() {
        "thesis §5.8; membrane-shell theory", &sphere_breathing},
       {"normals-accuracy", "Normals of whole closed curves and surfaces, every estimator",
        "Sulsky & York 2000; thesis ch. 7", &normals_accuracy},
+      {"sod", "Sod's shock tube against the exact Riemann solution, 100/200/400 cells",
+       "thesis §4.1, deck A.4.1", &sod},
   };
   return list;
 }

@@ -10,16 +10,22 @@ std::vector<double> sign_changes(const std::vector<double>& t, const std::vector
   return out;
 }
 
-double slope_per_index(const std::vector<double>& y) {
+double slope(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = static_cast<double>(y.size());
-  double sk = 0, sy = 0, skk = 0, sky = 0;
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
   for (std::size_t k = 0; k < y.size(); ++k) {
-    sk += k;
+    sx += x[k];
     sy += y[k];
-    skk += double(k) * k;
-    sky += k * y[k];
+    sxx += x[k] * x[k];
+    sxy += x[k] * y[k];
   }
-  return (n * sky - sk * sy) / (n * skk - sk * sk);
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+double slope_per_index(const std::vector<double>& y) {
+  std::vector<double> index(y.size());
+  for (std::size_t k = 0; k < y.size(); ++k) index[k] = static_cast<double>(k);
+  return slope(index, y);
 }
 
 }  // namespace pellicle::validation
