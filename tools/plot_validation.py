@@ -24,6 +24,8 @@ def plot(path: pathlib.Path) -> pathlib.Path:
     columns = list(zip(*data))
     if any(name.startswith("exact ") for name in header):
         fig = plot_panels(title, header, columns)
+    elif header[:2] == ["x", "y"]:
+        fig = plot_points(title, header, columns)
     else:
         fig, ax = plt.subplots(figsize=(8, 4.5))
         for name, values in zip(header[1:], columns[1:]):
@@ -55,6 +57,21 @@ def plot_panels(title, header, columns):
         ax.legend(fontsize=8)
     for ax in list(axes.flat)[len(quantities):]:
         ax.set_visible(False)
+    fig.suptitle(title)
+    return fig
+
+
+def plot_points(title, header, columns):
+    """Point positions (x, y), one panel per further column, coloured by its value."""
+    count = len(header) - 2
+    fig, axes = plt.subplots(1, count, figsize=(5.2 * count, 4.6), squeeze=False)
+    for ax, name, values in zip(axes.flat, header[2:], columns[2:]):
+        shown = ax.scatter(columns[0], columns[1], c=values, s=4, cmap="viridis")
+        fig.colorbar(shown, ax=ax, label=name)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_title(name)
     fig.suptitle(title)
     return fig
 

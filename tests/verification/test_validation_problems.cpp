@@ -11,6 +11,7 @@
 //   sphere-breathing 3D curved membrane: breathing period within 2%
 //   normals-accuracy every frame estimator on whole curves and surfaces
 //   sod              thesis §4.1: shock position, pressure ratio, speed within 3%; L1 falling
+//   gas-expansion    thesis §4.2: energy within 1%, falling with Δt; edge below escape speed
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -60,6 +61,9 @@ TEST(Validation, SphereBreathing) {
 }
 TEST(Validation, SodShockTube) {
   expect_all_checks_pass("sod");
+}
+TEST(Validation, GasExpansion) {
+  expect_all_checks_pass("gas-expansion");
 }
 TEST(Validation, NormalsAccuracy) {
   expect_all_checks_pass("normals-accuracy");

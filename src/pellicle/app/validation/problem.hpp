@@ -60,5 +60,6 @@ Outcome drum(Resolution resolution);
 Outcome sphere_breathing(Resolution resolution);
 Outcome normals_accuracy(Resolution resolution);
 Outcome sod(Resolution resolution);
+Outcome gas_expansion(Resolution resolution);
 
 }  // namespace pellicle::validation

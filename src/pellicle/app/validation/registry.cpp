@@ -29,6 +29,8 @@ const std::vector<Problem>& problems() {
        "Sulsky & York 2000; thesis ch. 7", &normals_accuracy},
       {"sod", "Sod's shock tube against the exact Riemann solution, 100/200/400 cells",
        "thesis §4.1, deck A.4.1", &sod},
+      {"gas-expansion", "Quarter cylinder of gas expanding into vacuum: energy, edge speed",
+       "thesis §4.2, deck A.4.2", &gas_expansion},
   };
   return list;
 }
