@@ -12,6 +12,7 @@
 //   normals-accuracy every frame estimator on whole curves and surfaces
 //   sod              thesis §4.1: shock position, pressure ratio, speed within 3%; L1 falling
 //   gas-expansion    thesis §4.2: energy within 1%, falling with Δt; edge below escape speed
+//   piston-container thesis §6.1: period within 2% of the frequency equation, two masses
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -64,6 +65,9 @@ TEST(Validation, SodShockTube) {
 }
 TEST(Validation, GasExpansion) {
   expect_all_checks_pass("gas-expansion");
+}
+TEST(Validation, PistonContainer) {
+  expect_all_checks_pass("piston-container");
 }
 TEST(Validation, NormalsAccuracy) {
   expect_all_checks_pass("normals-accuracy");

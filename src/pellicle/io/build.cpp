@@ -71,11 +71,14 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
                           "body '" + b.name + "': membrane points lie outside the grid"});
       continue;
     }
-    for (const auto& [index, mass] : b.point_masses)
+    auto check_index = [&](long index, const char* key) {
       if (index >= static_cast<long>(positions.size()))
-        problems.push_back({b.where, "body.point_masses",
+        problems.push_back({b.where, key,
                             "body '" + b.name + "': no point " + std::to_string(index) +
                                 " (it has " + std::to_string(positions.size()) + ")"});
+    };
+    for (const auto& entry : b.point_masses) check_index(entry.first, "body.point_masses");
+    for (const auto& entry : b.point_velocities) check_index(entry.first, "body.point_velocities");
     points.bodies.push_back(
         {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frame_estimator(c, b)});
     const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
@@ -118,6 +121,8 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
       points.velocity[p] += b.angular_velocity.cross(r).template head<D>() +
                             b.velocity_gradient * r.template head<D>();
     }
+    for (const auto& [index, velocity] : b.point_velocities)
+      if (index < body.count()) points.velocity[body.begin + index] = velocity;
   }
   if (!problems.empty()) throw InputError(problems);
 

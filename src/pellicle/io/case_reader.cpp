@@ -339,6 +339,19 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
           b.point_masses.emplace_back(static_cast<long>(entry[0]), entry[1]);
       }
     }
+    if (t->has("point_velocities")) {
+      for (const auto& entry : t->number_lists("point_velocities", D + 1)) {
+        if (entry[0] < 0 || entry[0] != std::floor(entry[0])) {
+          t->fail("point_velocities",
+                  "expected [[index, v_x, v_y" + std::string(D == 3 ? ", v_z" : "") +
+                      "], …] with whole indices >= 0");
+          continue;
+        }
+        Vec<D> v;
+        for (int d = 0; d < D; ++d) v[d] = entry[d + 1];
+        b.point_velocities.emplace_back(static_cast<long>(entry[0]), v);
+      }
+    }
     if (t->has("density")) b.density = t->number("density", NumberRange::positive());
     if (t->has("internal_energy")) {
       b.internal_energy = t->number("internal_energy", NumberRange::non_negative());

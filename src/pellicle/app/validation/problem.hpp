@@ -61,5 +61,6 @@ Outcome sphere_breathing(Resolution resolution);
 Outcome normals_accuracy(Resolution resolution);
 Outcome sod(Resolution resolution);
 Outcome gas_expansion(Resolution resolution);
+Outcome piston_container(Resolution resolution);
 
 }  // namespace pellicle::validation
