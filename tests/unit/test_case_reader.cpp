@@ -300,5 +300,63 @@ TEST(CaseReader, ProbesNameRealBodiesAndPoints) {
       << msg;
 }
 
+const std::string kGas = R"(
+[grid]
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cell = 0.1
+[solver]
+end_time = 0.1
+dt = 1e-4
+[[material]]
+name = "air"
+model = "gas"
+gamma = 1.4
+density = 1.2
+[[body]]
+name = "air"
+material = "air"
+internal_energy = 2e5
+region = { shape = "box", lower = [0.0, 0.0], upper = [1.0, 1.0] }
+)";
+
+TEST(CaseReader, GasCaseIsAccepted) {
+  EXPECT_EQ(problems_of(kGas), "");
+}
+
+TEST(CaseReader, GasKeysAreChecked) {
+  std::string msg = problems_of(kGas, {"material[0].gamma=1.0"});
+  EXPECT_NE(msg.find("material[0].gamma: expected a number > 1, found the number 1"),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kGas, {"material[0].artificial_viscosity={linear=-1.0}"});
+  EXPECT_NE(msg.find("material[0].artificial_viscosity.linear: expected a number >= 0"),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kGas, {"material[0].density_update=\"cells\""});
+  EXPECT_NE(msg.find("material[0].density_update: expected one of \"continuity\" or "
+                     "\"cell-quadratic\""),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kGas, {"grid.kinematics=\"plane-stress\""});
+  EXPECT_NE(msg.find("material[0].model: a fluid needs grid.kinematics"), std::string::npos) << msg;
+  msg = problems_of(kGas, {"body[0].internal_energy=-1.0"});
+  EXPECT_NE(msg.find("body[0].internal_energy: expected a number >= 0"), std::string::npos) << msg;
+}
+
+TEST(CaseReader, InternalEnergyOnlyForFluids) {
+  const std::string msg = problems_of(kValid, {"body[0].internal_energy=1.0"});
+  EXPECT_NE(msg.find("body[0].internal_energy: only fluid bodies"), std::string::npos) << msg;
+}
+
+TEST(CaseReader, PointVelocitiesNameRealPoints) {
+  std::string msg = problems_of(kGas, {"body[0].point_velocities=[[1e6, 0.0, 1.0]]"});
+  EXPECT_NE(msg.find("body 'air': no point 1000000 (it has 400)"), std::string::npos) << msg;
+  msg = problems_of(kGas, {"body[0].point_velocities=[[0.5, 0.0, 1.0]]"});
+  EXPECT_NE(msg.find("body[0].point_velocities: expected [[index, v_x, v_y], …]"),
+            std::string::npos)
+      << msg;
+}
+
 }  // namespace
 }  // namespace pellicle
