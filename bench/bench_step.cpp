@@ -1,5 +1,5 @@
-// Particle-steps per second of the full MPM step on the two-disk problem, per kernel and
-// velocity update, single thread (set OMP_NUM_THREADS for more).
+// Particle-steps per second of the full MPM step on the two-disk problem and on a box of
+// compressing gas, per kernel and velocity update, single thread (set OMP_NUM_THREADS for more).
 #include <benchmark/benchmark.h>
 
 #include "pellicle/io/bench_case.hpp"
@@ -24,6 +24,21 @@ BENCHMARK_CAPTURE(step, quadratic_flip, "quadratic-bspline", "flip")
     ->Arg(250000)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(step, cubic_flip, "cubic-bspline", "flip")
+    ->Arg(250000)
+    ->Unit(benchmark::kMillisecond);
+
+void gas_step(benchmark::State& state, const std::string& kernel, const std::string& update) {
+  auto simulation = make_bench_gas_box(state.range(0), kernel, update);
+  simulation->run(2);
+  for (auto _ : state) simulation->step();
+  state.SetItemsProcessed(state.iterations() * simulation->points().size());
+  state.counters["points"] = static_cast<double>(simulation->points().size());
+}
+
+BENCHMARK_CAPTURE(gas_step, quadratic_apic, "quadratic-bspline", "apic")
+    ->Arg(250000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(gas_step, linear_flip, "linear", "flip")
     ->Arg(250000)
     ->Unit(benchmark::kMillisecond);
 

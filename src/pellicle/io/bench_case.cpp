@@ -24,4 +24,43 @@ std::unique_ptr<Simulation<2>> make_bench_two_disks(long points, const std::stri
   return build_simulation<2>(c);
 }
 
+std::unique_ptr<Simulation<2>> make_bench_gas_box(long points, const std::string& kernel,
+                                                  const std::string& velocity_update) {
+  // A closed unit box of gas with shock viscosity, 4 points per cell, a small velocity
+  // field so the energy equation and the artificial viscosity do real work.
+  const long cells = std::max(4L, std::lround(std::sqrt(points / 4.0)));
+  char cell[64], dt[64];
+  std::snprintf(cell, sizeof cell, "grid.cell=%.17g", 1.0 / cells);
+  std::snprintf(dt, sizeof dt, "solver.dt=%.17g", 0.2 / cells / 1000.0);
+  const std::string text = R"(
+[grid]
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cell = 0.1
+boundary = { x_min = "slip", x_max = "slip", y_min = "slip", y_max = "slip" }
+[solver]
+end_time = 1000.0
+dt = 1e-5
+[[material]]
+name = "air"
+model = "gas"
+gamma = 1.4
+density = 1.0
+viscosity = 1e-3
+artificial_viscosity = { linear = 0.2, quadratic = 1.0 }
+[[body]]
+name = "air"
+material = "air"
+internal_energy = 2.5e5
+points_per_cell = 2
+velocity_gradient = [[-1.0, 0.0], [0.0, 0.5]]
+region = { shape = "box", lower = [0.0, 0.0], upper = [1.0, 1.0] }
+)";
+  const auto source = case_source_from_text(
+      text, "<gas benchmark>",
+      {cell, dt, "solver.kernel=" + kernel, "solver.velocity_update=" + velocity_update});
+  Case<2> c = read_case<2>(*source);
+  return build_simulation<2>(c);
+}
+
 }  // namespace pellicle
