@@ -40,6 +40,9 @@ expect 2 "cannot open the case file" -- "$pellicle" run "$work/missing.toml"
 touch "$work/a-file"
 expect 2 "output.directory: cannot create" -- "$pellicle" run --quiet --out "$work/a-file/sub"
 expect 2 "not expected: --no-such-flag" -- "$pellicle" run --no-such-flag
+expect 2 "--set body[0].internal_energy=-2.5: body[0].internal_energy: expected a number >= 0" -- \
+  "$pellicle" check "$cases/sod_shock_tube.toml" --set 'body[0].internal_energy=-2.5'
+expect 0 "warning   body 'gas' is a fluid moved by FLIP" -- "$pellicle" check "$cases/gas_expansion.toml"
 
 # Numerical failure: exit 3 with time, step, body, point; history and snapshots complete.
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"

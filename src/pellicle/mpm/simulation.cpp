@@ -164,10 +164,10 @@ double Simulation<D>::max_signal_speed() const {
 
 template <int D>
 std::size_t Simulation<D>::memory_estimate_bytes() const {
-  // Per point: position, velocity, affine, mass/volume/density, stress, strain, body id, the
+  // Per point: position, velocity, affine, mass/volume/density/energy, stress, strain, body id, the
   // velocity-gradient scratch and the stencil. Per node: five fields, plus one private
   // scatter copy of mass, momentum and force per extra thread.
-  const std::size_t per_point = sizeof(Vec<D>) * 2 + sizeof(Mat<D>) * 2 + 3 * sizeof(double) +
+  const std::size_t per_point = sizeof(Vec<D>) * 2 + sizeof(Mat<D>) * 2 + 4 * sizeof(double) +
                                 2 * sizeof(Sym<D>) + sizeof(int) + sizeof(double) +
                                 transfer_->stencil_bytes();
   const std::size_t per_node = sizeof(double) + 4 * sizeof(Vec<D>);
