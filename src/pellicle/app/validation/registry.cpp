@@ -31,7 +31,8 @@ const std::vector<Problem>& problems() {
        "thesis §4.1, deck A.4.1", &sod},
       {"gas-expansion", "Quarter cylinder of gas expanding into vacuum: energy, edge speed",
        "thesis §4.2, deck A.4.2", &gas_expansion},
-      {"piston-container", "Piston on a spring over a liquid column: period (two masses)",
+      {"piston-container",
+       "Piston on a spring over a liquid column: period (two masses, two liquids)",
        "thesis §6.1, deck A.4.10", &piston_container},
   };
   return list;
