@@ -30,6 +30,13 @@ struct TransferOptions {
   Kinematics kinematics = Kinematics::plane_strain;
 };
 
+//! Points [begin, end) a transfer works on; end < 0 means every point. Contact models move
+//! each body in its own grid field, one range per body.
+struct PointRange {
+  long begin = 0, end = -1;
+  long last(long count) const { return end < 0 ? count : end; }
+};
+
 //! Where to_points found the first unusable point, if any.
 struct PointFailure {
   long point = -1;
@@ -57,7 +64,7 @@ class Transfer {
   //!   f_i = −Σ_p V_p σ_p ∇N_i(x_p) + Σ_p m_p (g + a_body) N_i(x_p)   (IJNME eq 16)
   //! plus, in axisymmetry, the hoop term −Σ_p V_p σ_θθ N_i / r_p on the radial component.
   virtual void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
-                       bool forces) = 0;
+                       bool forces, PointRange range = {}) = 0;
   //! Scatter only the forces onto a grid whose mass and momentum are already mapped (USF).
   virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) = 0;
 
@@ -65,21 +72,22 @@ class Transfer {
   //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves
   //! the domain or becomes non-finite is reported in `failure` (the first one found).
   virtual double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
-                           PointFailure& failure) = 0;
+                           PointFailure& failure, PointRange range = {}) = 0;
 
   //! Grid nodes the points [begin, end) touch (N_i > 0), each listed once, appended to `nodes`.
   virtual void touched_nodes(const Grid<D>& grid, long begin, long end,
                              std::vector<long>& nodes) const = 0;
 
   //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
-  virtual void remap(const Particles<D>& points, Grid<D>& grid) = 0;
+  virtual void remap(const Particles<D>& points, Grid<D>& grid, PointRange range = {}) = 0;
 
   //! Point kinematics of stage `materials`, from the grid's current velocity field: the
   //! velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13), in axisymmetry the hoop rate
   //! v_r/r, and the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ.
   //! Returns the first point whose density became non-positive or non-finite, or −1.
   virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
-                                std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) = 0;
+                                std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate,
+                                PointRange range = {}) = 0;
 };
 
 //! A kernel known by name.

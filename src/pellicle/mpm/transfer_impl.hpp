@@ -54,32 +54,32 @@ class TransferImpl final : public Transfer<D> {
     for (long p = 0; p < n; ++p) compute_stencil(kernel_, grid, points.position[p], stencils_[p]);
   }
 
-  void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
-               bool forces) override {
+  void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
+               PointRange range) override {
     zero(grid.mass);
     zero(grid.momentum);
     if (forces) zero(grid.force);
     if (apic()) {
       if (forces)
-        scatter<true, true, true>(points, gravity, grid);
+        scatter<true, true, true>(points, gravity, grid, range);
       else
-        scatter<true, false, true>(points, gravity, grid);
+        scatter<true, false, true>(points, gravity, grid, range);
     } else {
       if (forces)
-        scatter<true, true, false>(points, gravity, grid);
+        scatter<true, true, false>(points, gravity, grid, range);
       else
-        scatter<true, false, false>(points, gravity, grid);
+        scatter<true, false, false>(points, gravity, grid, range);
     }
   }
 
   void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) override {
     zero(grid.force);
-    scatter<false, true, false>(points, gravity, grid);
+    scatter<false, true, false>(points, gravity, grid, {});
   }
 
-  double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
-                   PointFailure& failure) override {
-    const long n = points.size();
+  double to_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                   PointRange range) override {
+    const long n = range.last(points.size());
     const auto& strides = grid.strides();
     const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
                          : options_.update == VelocityUpdate::blend ? options_.flip_fraction
@@ -91,7 +91,7 @@ class TransferImpl final : public Transfer<D> {
     double max_speed = 0.0;
     long first_bad = std::numeric_limits<long>::max();
 #pragma omp parallel for schedule(static) reduction(max : max_speed) reduction(min : first_bad)
-    for (long p = 0; p < n; ++p) {
+    for (long p = range.begin; p < n; ++p) {
       const auto& s = stencils_[p];
       Vec<D> v_lagrangian = Vec<D>::Zero();
       Vec<D> v_change = Vec<D>::Zero();
@@ -140,25 +140,26 @@ class TransferImpl final : public Transfer<D> {
     nodes.erase(std::unique(nodes.begin() + first, nodes.end()), nodes.end());
   }
 
-  void remap(const Particles<D>& points, Grid<D>& grid) override {
+  void remap(const Particles<D>& points, Grid<D>& grid, PointRange range) override {
     zero(grid.momentum);
     if (apic())
-      scatter<false, false, true, true>(points, Vec<D>::Zero(), grid);
+      scatter<false, false, true, true>(points, Vec<D>::Zero(), grid, range);
     else
-      scatter<false, false, false, true>(points, Vec<D>::Zero(), grid);
+      scatter<false, false, false, true>(points, Vec<D>::Zero(), grid, range);
     grid.velocities_from_momentum();
   }
 
   long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
-                        std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate) override {
-    const long n = points.size();
+                        std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate,
+                        PointRange range) override {
+    const long n = range.last(points.size());
     const auto& strides = grid.strides();
-    gradient.resize(n);
+    gradient.resize(points.size());
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
-    if (axisymmetric) hoop_rate.resize(n);
+    if (axisymmetric) hoop_rate.resize(points.size());
     long first_bad = n;
 #pragma omp parallel for schedule(static) reduction(min : first_bad)
-    for (long p = 0; p < n; ++p) {
+    for (long p = range.begin; p < n; ++p) {
       Mat<D> L = Mat<D>::Zero();
       double v_radial = 0.0;
       for_each_node(stencils_[p], strides,
@@ -201,9 +202,10 @@ class TransferImpl final : public Transfer<D> {
   //! The one scatter loop: mass and momentum (WithMass), forces (WithForce), the APIC affine
   //! momentum term (Affine); MomentumOnly is the MUSL remap (mass already on the grid).
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly = false>
-  void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) {
+  void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
+               PointRange range) {
     constexpr bool with_momentum = WithMass || MomentumOnly;
-    const long n = points.size();
+    const long n = range.last(points.size());
     const auto& strides = grid.strides();
     const double h = grid.cell();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
@@ -214,7 +216,7 @@ class TransferImpl final : public Transfer<D> {
       NodeFields<D> out = buffers_.fields(t, grid);
       long lo = std::numeric_limits<long>::max(), hi = -1;
 #pragma omp for schedule(static) nowait
-      for (long p = 0; p < n; ++p) {
+      for (long p = range.begin; p < n; ++p) {
         const auto& s = stencils_[p];
         const double m = points.mass[p];
         const Vec<D> mv = m * points.velocity[p];
