@@ -1,0 +1,111 @@
+#include "pellicle/mpm/cell_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pellicle/core/bspline.hpp"
+
+namespace pellicle {
+
+namespace {
+
+//! Cell index along axis d after reflection at a constrained face; −1 beyond a free face.
+template <int D>
+int fold_cell(const Grid<D>& grid, int d, int i) {
+  const int cells = grid.cells()[d];
+  if (i < 0) return grid.faces()[2 * d] == FaceCondition::free ? -1 : -1 - i;
+  if (i >= cells) return grid.faces()[2 * d + 1] == FaceCondition::free ? -1 : 2 * cells - 1 - i;
+  return i;
+}
+
+//! Flat index of cell (i, j[, k]) after folding, or −1.
+template <int D>
+long fold_flat(const Grid<D>& grid, const int* index) {
+  long flat = 0, stride = 1;
+  for (int d = 0; d < D; ++d) {
+    const int c = fold_cell(grid, d, index[d]);
+    if (c < 0) return -1;
+    flat += c * stride;
+    stride *= grid.cells()[d];
+  }
+  return flat;
+}
+
+}  // namespace
+
+template <int D>
+long cell_count(const Grid<D>& grid) {
+  long n = 1;
+  for (int d = 0; d < D; ++d) n *= grid.cells()[d];
+  return n;
+}
+
+template <int D>
+long containing_cell(const Grid<D>& grid, const Vec<D>& x) {
+  long flat = 0, stride = 1;
+  for (int d = 0; d < D; ++d) {
+    const int c = std::clamp(static_cast<int>(std::floor((x[d] - grid.lower()[d]) / grid.cell())),
+                             0, grid.cells()[d] - 1);
+    flat += c * stride;
+    stride *= grid.cells()[d];
+  }
+  return flat;
+}
+
+template <int D>
+void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
+                     const std::vector<double>& weight, long begin, long end,
+                     std::vector<double>& cells) {
+  const double inv_h = 1.0 / grid.cell();
+#pragma omp parallel for schedule(static)
+  for (long p = begin; p < end; ++p) {
+    // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
+    const Vec<D> u = (positions[p] - grid.lower()) * inv_h - Vec<D>::Constant(0.5);
+    double w[D][3], dw[3];
+    int base[D];
+    for (int d = 0; d < D; ++d) base[d] = quadratic_bspline(u[d], w[d], dw);
+    for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+          const int offset[3] = {i, j, k};
+          int index[D];
+          double value = weight[p];
+          for (int d = 0; d < D; ++d) {
+            index[d] = base[d] + offset[d];
+            value *= w[d][offset[d]];
+          }
+          const long flat = fold_flat(grid, index);
+          if (flat < 0 || value == 0.0) continue;
+#pragma omp atomic
+          cells[flat] += value;
+        }
+  }
+}
+
+template <int D>
+Vec<D> cell_gradient_at_node(const Grid<D>& grid, const std::vector<double>& cells, long node) {
+  // Node (I, J[, K]) of the domain touches cells I−1 and I along each axis.
+  const IVec<D> index = grid.unflatten(node);
+  Vec<D> gradient = Vec<D>::Zero();
+  for (int corner = 0; corner < (1 << D); ++corner) {
+    int cell[D];
+    for (int d = 0; d < D; ++d) cell[d] = index[d] - Grid<D>::kGhost - 1 + ((corner >> d) & 1);
+    const long flat = fold_flat(grid, cell);
+    const double value = flat < 0 ? 0.0 : cells[flat];
+    for (int d = 0; d < D; ++d) gradient[d] += ((corner >> d) & 1 ? value : -value);
+  }
+  return gradient / ((1 << (D - 1)) * grid.cell());
+}
+
+template long cell_count<2>(const Grid<2>&);
+template long cell_count<3>(const Grid<3>&);
+template long containing_cell<2>(const Grid<2>&, const Vec<2>&);
+template long containing_cell<3>(const Grid<3>&, const Vec<3>&);
+template void spread_to_cells<2>(const Grid<2>&, const std::vector<Vec<2>>&,
+                                 const std::vector<double>&, long, long, std::vector<double>&);
+template void spread_to_cells<3>(const Grid<3>&, const std::vector<Vec<3>>&,
+                                 const std::vector<double>&, long, long, std::vector<double>&);
+template Vec<2> cell_gradient_at_node<2>(const Grid<2>&, const std::vector<double>&, long);
+template Vec<3> cell_gradient_at_node<3>(const Grid<3>&, const std::vector<double>&, long);
+
+}  // namespace pellicle
