@@ -138,8 +138,11 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
     if (k.name == c.kernel) transfer = k.make(c.transfer, ppc);
 
   std::vector<std::unique_ptr<Material<D>>> materials = std::move(c.materials);
-  return std::make_unique<Simulation<D>>(c.settings, std::move(grid), std::move(points),
-                                         std::move(materials), std::move(transfer), c.gravity);
+  auto simulation =
+      std::make_unique<Simulation<D>>(c.settings, std::move(grid), std::move(points),
+                                      std::move(materials), std::move(transfer), c.gravity);
+  simulation->set_contact(std::move(c.contact));
+  return simulation;
 }
 
 template std::unique_ptr<Simulation<2>> build_simulation<2>(Case<2>&);

@@ -342,9 +342,9 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
     if (t->has("point_velocities")) {
       for (const auto& entry : t->number_lists("point_velocities", D + 1)) {
         if (entry[0] < 0 || entry[0] != std::floor(entry[0])) {
-          t->fail("point_velocities",
-                  "expected [[index, v_x, v_y" + std::string(D == 3 ? ", v_z" : "") +
-                      "], …] with whole indices >= 0");
+          t->fail("point_velocities", "expected [[index, v_x, v_y" +
+                                          std::string(D == 3 ? ", v_z" : "") +
+                                          "], …] with whole indices >= 0");
           continue;
         }
         Vec<D> v;
@@ -416,6 +416,22 @@ void read_probes(TomlParameters& root, Case<D>& c) {
   }
 }
 
+//! [contact]: the single centre-of-mass field (default) or a registered contact model.
+template <int D>
+void read_contact(TomlParameters& root, Case<D>& c) {
+  if (!root.has("contact")) return;
+  auto t = root.sub_table("contact", true);
+  std::vector<std::string> models{"single-field"};
+  for (const auto& m : contact_models<D>()) models.push_back(m.name);
+  const std::string model = t->choice("model", models, "single-field");
+  std::vector<std::string> names;
+  for (const auto& b : c.bodies) names.push_back(b.name);
+  for (const auto& m : contact_models<D>())
+    if (m.name == model) c.contact = m.make(*t, names);
+  if (c.contact && c.settings.scheme == UpdateScheme::usf)
+    t->fail("model", "contact models work with solver.scheme = \"musl\" or \"usl\", not \"usf\"");
+}
+
 }  // namespace
 
 template <int D>
@@ -437,6 +453,7 @@ Case<D> read_case(const CaseSource& source) {
     read_output(root, c);
     read_materials(root, c);
     read_bodies(root, c);
+    read_contact(root, c);
     read_probes(root, c);
   }  // unknown keys are reported as the readers go out of scope
   problems.throw_if_any();

@@ -79,6 +79,9 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
   for (const auto& b : simulation.points().bodies)
     if (simulation.material(b.material).is_fluid())
       history_ << ',' << b.name << ".pressure," << b.name << ".volume";
+  if (simulation.contact_forces())
+    for (const auto& b : simulation.points().bodies)
+      for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".contact_" << axis_names[d];
   for (const auto& probe : probes_)
     for (const auto& column : probe.columns()) history_ << ',' << column;
   history_ << '\n' << std::setprecision(12);
@@ -108,6 +111,9 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     for (long i = b.begin; i < b.end; ++i) volume += p.volume[i];
     history_ << ',' << material.mean_pressure(p, b.begin, b.end) << ',' << volume;
   }
+  if (const auto* forces = simulation.contact_forces())
+    for (const auto& f : *forces)
+      for (int d = 0; d < D; ++d) history_ << ',' << f[d];
   for (const auto& probe : probes_)
     for (double v : probe.values(simulation)) history_ << ',' << v;
   history_ << '\n';

@@ -48,14 +48,30 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
 }
 
 template <int D>
+void Simulation<D>::set_contact(std::unique_ptr<ContactModel<D>> model) {
+  contact_ = std::move(model);
+  fields_ = contact_
+                ? std::make_unique<BodyFields<D>>(grid_, static_cast<int>(points_.bodies.size()))
+                : nullptr;
+}
+
+template <int D>
 void Simulation<D>::prescribe_rigid_nodes() {
-  std::vector<std::pair<long, Vec<D>>> prescribed;
+  // The centre-of-mass field takes every rigid body's velocity; with a contact model each
+  // body's own field takes only its own, so the others meet it through the contact rule.
+  std::vector<std::pair<long, Vec<D>>> prescribed, own;
   std::vector<long> nodes;
-  for (const auto& body : points_.bodies) {
+  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
+    const auto& body = points_.bodies[b];
     if (!materials_[body.material]->is_rigid()) continue;
     nodes.clear();
     transfer_->touched_nodes(grid_, body.begin, body.end, nodes);
-    for (long n : nodes) prescribed.emplace_back(n, points_.velocity[body.begin]);
+    own.clear();
+    for (long n : nodes) {
+      prescribed.emplace_back(n, points_.velocity[body.begin]);
+      own.emplace_back(n, points_.velocity[body.begin]);
+    }
+    if (fields_) fields_->body_grid(static_cast<int>(b)).prescribe(own);
   }
   grid_.prescribe(std::move(prescribed));
 }
@@ -96,16 +112,30 @@ void Simulation<D>::step() {
     grid_.velocities_from_momentum();
     update_materials(dt);
     transfer_->forces_to_grid(points_, gravity_, grid_);
+  } else if (fields_) {
+    fields_->to_grid(*transfer_, points_, gravity_, grid_);
   } else {
     transfer_->to_grid(points_, gravity_, grid_, true);
   }
-  grid_.integrate(dt);   // grid
+  grid_.integrate(dt);  // grid
+  if (fields_) {        // contact: each body's field, then the model's rule at shared nodes
+    fields_->integrate(dt);
+    contact_->resolve(*fields_, grid_, points_, dt, ContactPass::lagrangian);
+  }
   PointFailure failure;  // to_points
-  max_speed_ = transfer_->to_points(grid_, dt, points_, failure);
+  max_speed_ = fields_ ? fields_->to_points(*transfer_, dt, points_, failure)
+                       : transfer_->to_points(grid_, dt, points_, failure);
   if (failure.point >= 0) fail(failure.point, failure.what);
   if (has_rigid_bodies_) restore_rigid_velocities();
-  if (settings_.scheme == UpdateScheme::musl) transfer_->remap(points_, grid_);  // remap
-  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);               // materials
+  if (settings_.scheme == UpdateScheme::musl) {  // remap
+    if (fields_) {
+      fields_->remap(*transfer_, points_, grid_);
+      contact_->resolve(*fields_, grid_, points_, dt, ContactPass::convected);
+    } else {
+      transfer_->remap(points_, grid_);
+    }
+  }
+  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);  // materials
   time_ += dt;
   last_dt_ = dt;
   ++step_;
@@ -178,7 +208,9 @@ std::size_t Simulation<D>::memory_estimate_bytes() const {
 
 template <int D>
 void Simulation<D>::update_materials(double dt) {
-  const long bad = transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
+  const long bad =
+      fields_ ? fields_->point_kinematics(*transfer_, dt, points_, velocity_gradient_, hoop_rate_)
+              : transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
   if (bad >= 0) fail(bad, "non-positive or non-finite density");
   if (!cell_density_ranges_.empty())  // fluids with cell densities (thesis eq 4.6)
     cell_quadratic_density(grid_, settings_.kinematics == Kinematics::axisymmetric,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/mpm/contact/contact_model.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/particles.hpp"
@@ -64,6 +65,14 @@ class Simulation {
   void run(long max_steps = 0);
   bool finished() const;
 
+  //! Use a contact model (each body in its own grid field); without one every body moves
+  //! in the single centre-of-mass field.
+  void set_contact(std::unique_ptr<ContactModel<D>> model);
+  //! Total contact force on each body in the last step; null without a contact model.
+  const std::vector<Vec<D>>* contact_forces() const {
+    return fields_ ? &fields_->contact_force() : nullptr;
+  }
+
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
   void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
 
@@ -102,6 +111,8 @@ class Simulation {
   Particles<D> points_;
   std::vector<std::unique_ptr<Material<D>>> materials_;
   std::unique_ptr<Transfer<D>> transfer_;
+  std::unique_ptr<ContactModel<D>> contact_;
+  std::unique_ptr<BodyFields<D>> fields_;  //!< per-body grids, only with a contact model
   Vec<D> gravity_;
   std::vector<StepObserver<D>*> observers_;
 

@@ -1,0 +1,90 @@
+// York's contact-release algorithm (IJNME §4.1 eq 26; thesis A.1.3 eqs 9.7–9.9). At a node
+// that bodies share, either all of them move in the centre-of-mass field (contact: no
+// penetration, no slip) or each in its own field (release). The criteria, with n^I the
+// outward normal of body I and v the nodal velocities mapped from the points (before the
+// forces act, IJNME eqs 22 and 25); the relations were lost from both texts and follow
+// from their meaning (docs/theory/contact.md):
+//   body-body (9.7)            release if (v^m − v^J) · n^m < 0 for the other bodies J
+//   body-centre-of-mass (9.8)  release if (v^m − v^cm) · n^m < 0
+//   both (9.9, IJNME eq 26)    release if (v^I − v^cm) · n^I < 0 for every body I there
+// m is the master body where it shares the node, else the first body there.
+#include <algorithm>
+#include <string>
+
+#include "pellicle/mpm/contact/contact_model.hpp"
+
+namespace pellicle {
+namespace {
+
+enum class ReleaseCriterion { body_body, body_centre_of_mass, both };
+
+template <int D>
+class Release final : public ContactModel<D> {
+ public:
+  Release(ReleaseCriterion criterion, int master) : criterion_(criterion), master_(master) {}
+
+  void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
+               double dt, ContactPass pass) const override {
+    fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this](SharedNode<D>& node) {
+      if (!releases(node))
+        for (int k = 0; k < node.count; ++k) node.in_contact[k] = true;
+    });
+  }
+
+ private:
+  bool releases(const SharedNode<D>& node) const {
+    int m = 0;
+    for (int k = 0; k < node.count; ++k)
+      if (node.body[k] == master_) m = k;
+    // Without a normal there is no way to tell separation: keep the bodies together.
+    for (int k = 0; k < node.count; ++k)
+      if (node.normal[k].isZero()) return false;
+    switch (criterion_) {
+      case ReleaseCriterion::body_body:
+        for (int k = 0; k < node.count; ++k)
+          if (k != m && (node.mapped[m] - node.mapped[k]).dot(node.normal[m]) >= 0.0) return false;
+        return true;
+      case ReleaseCriterion::body_centre_of_mass:
+        return (node.mapped[m] - node.centre_of_mass_mapped).dot(node.normal[m]) < 0.0;
+      case ReleaseCriterion::both:
+        for (int k = 0; k < node.count; ++k)
+          if ((node.mapped[k] - node.centre_of_mass_mapped).dot(node.normal[k]) >= 0.0)
+            return false;
+        return true;
+    }
+    return false;
+  }
+
+  ReleaseCriterion criterion_;
+  int master_;
+};
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<ContactModel<D>> make_release(ParameterReader& in,
+                                              const std::vector<std::string>& body_names) {
+  const std::string criterion =
+      in.choice("criterion", {"body-body", "body-centre-of-mass", "both"}, "both");
+  int master = 0;
+  if (in.has("master")) {
+    const std::string name = in.text("master");
+    const auto it = std::find(body_names.begin(), body_names.end(), name);
+    if (it == body_names.end())
+      in.fail("master", "expected the name of a [[body]], found \"" + name + "\"");
+    else
+      master = static_cast<int>(it - body_names.begin());
+  }
+  const ReleaseCriterion c = criterion == "body-body" ? ReleaseCriterion::body_body
+                             : criterion == "body-centre-of-mass"
+                                 ? ReleaseCriterion::body_centre_of_mass
+                                 : ReleaseCriterion::both;
+  return std::make_unique<Release<D>>(c, master);
+}
+
+template std::unique_ptr<ContactModel<2>> make_release<2>(ParameterReader&,
+                                                          const std::vector<std::string>&);
+template std::unique_ptr<ContactModel<3>> make_release<3>(ParameterReader&,
+                                                          const std::vector<std::string>&);
+
+}  // namespace pellicle
