@@ -119,11 +119,11 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
       for (int k = 0; k < node.count; ++k) node.normal[k] = outward_normal(node.body[k], n);
       if (node.count == 2) {
         // Two bodies: one common normal, opposite for each, so the corrections balance
-        // (Bardenhagen et al. 2000).
-        const Vec<D> common = node.normal[0] - node.normal[1];
-        const double length = common.norm();
-        node.normal[0] = length > 0.0 ? Vec<D>(common / length) : Vec<D>::Zero();
-        node.normal[1] = -node.normal[0];
+        // (Bardenhagen et al. 2000). It is the normal of the body holding more mass at the
+        // node: where one body has only a corner or an edge there, the other's surface is
+        // the better defined (a block's corner sliding on a plate).
+        const int major = node.mass[0] >= node.mass[1] ? 0 : 1;
+        node.normal[1 - major] = -node.normal[major];
       }
       rule(node);
       for (int k = 0; k < node.count; ++k) {
