@@ -62,5 +62,6 @@ Outcome normals_accuracy(Resolution resolution);
 Outcome sod(Resolution resolution);
 Outcome gas_expansion(Resolution resolution);
 Outcome piston_container(Resolution resolution);
+Outcome friction_block(Resolution resolution);
 
 }  // namespace pellicle::validation

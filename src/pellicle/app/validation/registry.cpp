@@ -34,6 +34,8 @@ const std::vector<Problem>& problems() {
       {"piston-container",
        "Piston on a spring over a liquid column: period (two masses, two liquids)",
        "thesis §6.1, deck A.4.10", &piston_container},
+      {"friction-block", "Block sliding on an incline: Coulomb friction, μ = 0, 0.3, 0.7",
+       "Bardenhagen, Brackbill & Sulsky 2000; analytic", &friction_block},
   };
   return list;
 }
