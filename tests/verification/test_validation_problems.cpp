@@ -13,6 +13,7 @@
 //   sod              thesis §4.1: shock position, pressure ratio, speed within 3%; L1 falling
 //   gas-expansion    thesis §4.2: energy within 1%, falling with Δt; edge below escape speed
 //   piston-container thesis §6.1: period within 2% of the frequency equation, two masses
+//   two-bars-release IJNME §4.2: with contact-release the bars part; difference converges
 //   friction-block   Coulomb friction: block on an incline within 3% of g(sin θ − μ cos θ)
 #include <gtest/gtest.h>
 
@@ -69,6 +70,9 @@ TEST(Validation, GasExpansion) {
 }
 TEST(Validation, PistonContainer) {
   expect_all_checks_pass("piston-container");
+}
+TEST(Validation, TwoBarsRelease) {
+  expect_all_checks_pass("two-bars-release");
 }
 TEST(Validation, FrictionBlock) {
   expect_all_checks_pass("friction-block");

@@ -203,7 +203,9 @@ std::size_t Simulation<D>::memory_estimate_bytes() const {
   const std::size_t per_node = sizeof(double) + 4 * sizeof(Vec<D>);
   const std::size_t per_copy = sizeof(double) + 2 * sizeof(Vec<D>);
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
-  return per_point * points_.size() + grid_.node_count() * (per_node + (threads - 1) * per_copy);
+  const std::size_t grids = 1 + (fields_ ? points_.bodies.size() : 0);  // contact: one per body
+  return per_point * points_.size() +
+         grid_.node_count() * (grids * per_node + (threads - 1) * per_copy);
 }
 
 template <int D>

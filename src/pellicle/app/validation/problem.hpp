@@ -63,5 +63,6 @@ Outcome sod(Resolution resolution);
 Outcome gas_expansion(Resolution resolution);
 Outcome piston_container(Resolution resolution);
 Outcome friction_block(Resolution resolution);
+Outcome two_bars_release(Resolution resolution);
 
 }  // namespace pellicle::validation

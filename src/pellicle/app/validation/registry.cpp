@@ -15,6 +15,8 @@ const std::vector<Problem>& problems() {
        &two_disks},
       {"two-bars-stick", "Two-bar impact, single velocity field: the bars stick",
        "IJNME 1999 §4.1 Fig. 18; thesis A.1.2", &two_bars_stick},
+      {"two-bars-release", "Two-bar impact with contact-release: the bars part, three grids",
+       "IJNME 1999 §4.2 Fig. 20; thesis A.1.5", &two_bars_release},
       {"spring-mass", "Spring–mass oscillator; stability at 1.6 and 1.7 Δt_crit",
        "IJNME 1999 §3.1.1; thesis §5.5", &spring_mass},
       {"string-slack", "String with slack, one-way law: free fall, tension, free flight",
