@@ -30,11 +30,12 @@ struct SharedNode {
   //! eq 25): the criteria compare these, free of the large accelerations of nodes that
   //! hold only a sliver of a body's mass.
   Vec<D> mapped[kMaxBodies];
-  Vec<D> normal[kMaxBodies];     //!< outward unit normal of each body (zero where undefined)
+  Vec<D> normal[kMaxBodies];  //!< outward unit normal of each body (zero where undefined)
+  bool membrane[kMaxBodies];  //!< membranes have outward normals on both sides
   //! Set by a rule for bodies that move with the centre-of-mass velocity here (IJNME
   //! eqs 20–22) instead of their own.
   bool in_contact[kMaxBodies];
-  Vec<D> centre_of_mass;  //!< centre-of-mass new velocity
+  Vec<D> centre_of_mass;         //!< centre-of-mass new velocity
   Vec<D> centre_of_mass_mapped;  //!< centre-of-mass velocity from momentum (IJNME eq 22)
 };
 
@@ -42,6 +43,19 @@ struct SharedNode {
 //! (they move the points; their corrections are the contact forces), or the convected ones
 //! of the MUSL remap (they give the strain rates, so bodies in contact deform together).
 enum class ContactPass { lagrangian, convected };
+
+//! For two bodies at a node: one normal, opposite for each, so that corrections balance
+//! (Bardenhagen et al. 2000). It is the normal of a solid rather than a membrane (whose
+//! two-sided colour gives a normal pointing away from it on either side, not toward the
+//! other body), and of the body holding more mass at the node: where one body has only a
+//! corner there, the other's surface is the better defined (a block's corner on a plate).
+template <int D>
+void use_common_normal(SharedNode<D>& node) {
+  if (node.count != 2) return;
+  int major = node.mass[0] >= node.mass[1] ? 0 : 1;
+  if (node.membrane[0] != node.membrane[1]) major = node.membrane[0] ? 1 : 0;
+  node.normal[1 - major] = -node.normal[major];
+}
 
 template <int D>
 class BodyFields {
@@ -111,20 +125,13 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
         node.velocity[node.count] = grids_[b].velocity[n];
         node.mapped[node.count] = mapped(grids_[b], n);
         node.in_contact[node.count] = false;
+        node.membrane[node.count] = points.bodies[b].frames != nullptr;
         ++node.count;
       }
       if (node.count < 2) continue;
       node.centre_of_mass = centre_of_mass.velocity[n];
       node.centre_of_mass_mapped = mapped(centre_of_mass, n);
       for (int k = 0; k < node.count; ++k) node.normal[k] = outward_normal(node.body[k], n);
-      if (node.count == 2) {
-        // Two bodies: one common normal, opposite for each, so the corrections balance
-        // (Bardenhagen et al. 2000). It is the normal of the body holding more mass at the
-        // node: where one body has only a corner or an edge there, the other's surface is
-        // the better defined (a block's corner sliding on a plate).
-        const int major = node.mass[0] >= node.mass[1] ? 0 : 1;
-        node.normal[1 - major] = -node.normal[major];
-      }
       rule(node);
       for (int k = 0; k < node.count; ++k) {
         Grid<D>& g = grids_[node.body[k]];

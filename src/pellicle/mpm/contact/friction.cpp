@@ -21,6 +21,7 @@ class Friction final : public ContactModel<D> {
   void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
                double dt, ContactPass pass) const override {
     fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this](SharedNode<D>& node) {
+      use_common_normal(node);
       for (int k = 0; k < node.count; ++k) {
         const Vec<D>& n = node.normal[k];
         const Vec<D> relative = node.velocity[k] - node.centre_of_mass;
