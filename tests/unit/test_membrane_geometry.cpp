@@ -77,8 +77,14 @@ TEST(SurfaceMeshes, AreasOfTheGeneratedShapes) {
 
 class MeshFiles : public ::testing::Test {
  protected:
-  std::filesystem::path dir = std::filesystem::temp_directory_path() / "pellicle_mesh_files";
-  void SetUp() override { std::filesystem::create_directories(dir); }
+  // One directory per test: ctest runs the tests of this fixture side by side.
+  std::filesystem::path dir;
+  void SetUp() override {
+    dir = std::filesystem::temp_directory_path() /
+          ("pellicle_mesh_files_" +
+           std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::create_directories(dir);
+  }
   void TearDown() override { std::filesystem::remove_all(dir); }
   void write(const std::string& name, const std::string& text) {
     std::ofstream(dir / name, std::ios::binary) << text;
