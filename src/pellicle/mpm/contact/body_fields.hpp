@@ -139,7 +139,13 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
         if (lagrangian) {
           const Vec<D> change = node.velocity[k] - g.velocity[n];
           force[node.body[k]] += node.mass[k] / dt * change;
-          g.velocity_change[n] += change;  // FLIP increment from the body's own old velocity
+          // FLIP increment: in contact the centre-of-mass field's own, as standard MPM moves
+          // the points there (eqs 20–22); otherwise from the body's own velocity before
+          // the step, with the rule's correction.
+          if (node.in_contact[k])
+            g.velocity_change[n] = centre_of_mass.velocity_change[n];
+          else
+            g.velocity_change[n] += change;
         }
         g.velocity[n] = node.velocity[k];
       }
