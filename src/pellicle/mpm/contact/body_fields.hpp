@@ -22,6 +22,7 @@ namespace pellicle {
 template <int D>
 struct SharedNode {
   static constexpr int kMaxBodies = 8;  //!< more bodies at one node: the extra ones are left alone
+  long index = 0;                       //!< the grid node
   int count = 0;
   int body[kMaxBodies];
   double mass[kMaxBodies];
@@ -129,6 +130,7 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
         ++node.count;
       }
       if (node.count < 2) continue;
+      node.index = n;
       node.centre_of_mass = centre_of_mass.velocity[n];
       node.centre_of_mass_mapped = mapped(centre_of_mass, n);
       for (int k = 0; k < node.count; ++k) node.normal[k] = outward_normal(node.body[k], n);

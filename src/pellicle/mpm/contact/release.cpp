@@ -10,6 +10,7 @@
 // m is the master body where it shares the node, else the first body there.
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "pellicle/mpm/contact/contact_model.hpp"
 
@@ -25,8 +26,12 @@ class Release final : public ContactModel<D> {
 
   void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
                double dt, ContactPass pass) const override {
-    fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this](SharedNode<D>& node) {
-      if (!releases(node))
+    // The decision is taken once per step, on the Lagrangian pass, and kept for the
+    // convected velocities, so bodies that moved together also deform together.
+    if (pass == ContactPass::lagrangian) released_.assign(centre_of_mass.node_count(), 0);
+    fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this, pass](SharedNode<D>& node) {
+      if (pass == ContactPass::lagrangian) released_[node.index] = releases(node);
+      if (!released_[node.index])
         for (int k = 0; k < node.count; ++k) node.in_contact[k] = true;
     });
   }
@@ -57,6 +62,7 @@ class Release final : public ContactModel<D> {
 
   ReleaseCriterion criterion_;
   int master_;
+  mutable std::vector<char> released_;  //!< per node, this step's decision
 };
 
 }  // namespace
