@@ -14,6 +14,9 @@
 //   gas-expansion    thesis §4.2: energy within 1%, falling with Δt; edge below escape speed
 //   piston-container thesis §6.1: period within 2% of the frequency equation, two masses
 //   two-bars-release IJNME §4.2: with contact-release the bars part; difference converges
+//   disks-wire       IJNME §4.3: the disks pinch the wire, never cross it, and part from it
+//   offset-disks     IJNME §4.4: clockwise spin while pinching
+//   ball-and-net     thesis A.1.6: the ball leaves at −0.7 ± 15% with release
 //   friction-block   Coulomb friction: block on an incline within 3% of g(sin θ − μ cos θ)
 #include <gtest/gtest.h>
 
@@ -73,6 +76,15 @@ TEST(Validation, PistonContainer) {
 }
 TEST(Validation, TwoBarsRelease) {
   expect_all_checks_pass("two-bars-release");
+}
+TEST(Validation, DisksWire) {
+  expect_all_checks_pass("disks-wire");
+}
+TEST(Validation, OffsetDisks) {
+  expect_all_checks_pass("offset-disks");
+}
+TEST(Validation, BallAndNet) {
+  expect_all_checks_pass("ball-and-net");
 }
 TEST(Validation, FrictionBlock) {
   expect_all_checks_pass("friction-block");

@@ -64,5 +64,8 @@ Outcome gas_expansion(Resolution resolution);
 Outcome piston_container(Resolution resolution);
 Outcome friction_block(Resolution resolution);
 Outcome two_bars_release(Resolution resolution);
+Outcome disks_wire(Resolution resolution);
+Outcome offset_disks(Resolution resolution);
+Outcome ball_and_net(Resolution resolution);
 
 }  // namespace pellicle::validation
