@@ -1,5 +1,6 @@
-// Particle-steps per second of the full MPM step on the two-disk problem and on a box of
-// compressing gas, per kernel and velocity update, single thread (set OMP_NUM_THREADS for more).
+// Particle-steps per second of the full MPM step on the two-disk problem (also with
+// contact-release) and on a box of compressing gas, per kernel and velocity update, single thread
+// (set OMP_NUM_THREADS for more).
 #include <benchmark/benchmark.h>
 
 #include "pellicle/io/bench_case.hpp"
@@ -26,6 +27,17 @@ BENCHMARK_CAPTURE(step, quadratic_flip, "quadratic-bspline", "flip")
 BENCHMARK_CAPTURE(step, cubic_flip, "cubic-bspline", "flip")
     ->Arg(250000)
     ->Unit(benchmark::kMillisecond);
+
+void release_step(benchmark::State& state) {
+  auto simulation =
+      make_bench_two_disks(state.range(0), "linear", "flip", {"contact={model=\"release\"}"});
+  simulation->run(2);
+  for (auto _ : state) simulation->step();
+  state.SetItemsProcessed(state.iterations() * simulation->points().size());
+  state.counters["points"] = static_cast<double>(simulation->points().size());
+}
+
+BENCHMARK(release_step)->Arg(250000)->Unit(benchmark::kMillisecond);
 
 void gas_step(benchmark::State& state, const std::string& kernel, const std::string& update) {
   auto simulation = make_bench_gas_box(state.range(0), kernel, update);

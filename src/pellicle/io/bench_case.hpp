@@ -5,13 +5,15 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
 
 std::unique_ptr<Simulation<2>> make_bench_two_disks(long points, const std::string& kernel,
-                                                    const std::string& velocity_update);
+                                                    const std::string& velocity_update,
+                                                    const std::vector<std::string>& extra = {});
 
 //! A closed box of compressing gas (ideal gas, viscosity, artificial viscosity) with about
 //! `points` points: the fluid constitutive update and energy equation under load.

@@ -1,5 +1,7 @@
 #include "pellicle/mpm/cell_field.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -57,28 +59,40 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
                      const std::vector<double>& weight, long begin, long end,
                      std::vector<double>& cells) {
   const double inv_h = 1.0 / grid.cell();
-#pragma omp parallel for schedule(static)
-  for (long p = begin; p < end; ++p) {
-    // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
-    const Vec<D> u = (positions[p] - grid.lower()) * inv_h - Vec<D>::Constant(0.5);
-    double w[D][3], dw[3];
-    int base[D];
-    for (int d = 0; d < D; ++d) base[d] = quadratic_bspline(u[d], w[d], dw);
-    for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) {
-          const int offset[3] = {i, j, k};
-          int index[D];
-          double value = weight[p];
-          for (int d = 0; d < D; ++d) {
-            index[d] = base[d] + offset[d];
-            value *= w[d][offset[d]];
+  // Thread 0 adds into `cells`, the others into private copies summed at the end: no
+  // atomics in the point loop.
+  const int threads = omp_get_max_threads();
+  std::vector<std::vector<double>> partial(threads - 1, std::vector<double>(cells.size(), 0.0));
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num();
+    double* out = t == 0 ? cells.data() : partial[t - 1].data();
+#pragma omp for schedule(static)
+    for (long p = begin; p < end; ++p) {
+      // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
+      const Vec<D> u = (positions[p] - grid.lower()) * inv_h - Vec<D>::Constant(0.5);
+      double w[D][3], dw[3];
+      int base[D];
+      for (int d = 0; d < D; ++d) base[d] = quadratic_bspline(u[d], w[d], dw);
+      for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) {
+            const int offset[3] = {i, j, k};
+            int index[D];
+            double value = weight[p];
+            for (int d = 0; d < D; ++d) {
+              index[d] = base[d] + offset[d];
+              value *= w[d][offset[d]];
+            }
+            const long flat = fold_flat(grid, index);
+            if (flat >= 0) out[flat] += value;
           }
-          const long flat = fold_flat(grid, index);
-          if (flat < 0 || value == 0.0) continue;
-#pragma omp atomic
-          cells[flat] += value;
-        }
+    }
+  }
+  for (const auto& copy : partial) {
+    const long n = static_cast<long>(cells.size());
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < n; ++c) cells[c] += copy[c];
   }
 }
 

@@ -104,8 +104,9 @@ template <int D>
 template <class Rule>
 void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Particles<D>& points,
                                        double dt, ContactPass pass, Rule&& rule) {
-  colour_functions(points);
   const bool lagrangian = pass == ContactPass::lagrangian;
+  // Normals from the colour at the start of the step serve both passes.
+  if (lagrangian) colour_functions(points);
   const int bodies = body_count();
   // Before the forces act: v^k = v − Δv (the convected pass has no forces).
   auto mapped = [lagrangian](const Grid<D>& g, long n) -> Vec<D> {
