@@ -358,5 +358,27 @@ TEST(CaseReader, PointVelocitiesNameRealPoints) {
       << msg;
 }
 
+TEST(CaseReader, ContactKeysAreChecked) {
+  std::string msg = problems_of(kValid, {"contact={model=\"glue\"}"});
+  EXPECT_NE(msg.find("contact.model: expected one of \"single-field\", \"release\" or "
+                     "\"friction\""),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kValid, {"contact={model=\"release\", master=\"anvil\"}"});
+  EXPECT_NE(msg.find("contact.master: expected the name of a [[body]], found \"anvil\""),
+            std::string::npos)
+      << msg;
+  msg = problems_of(kValid, {"contact={model=\"friction\", coefficient=-0.1}"});
+  EXPECT_NE(msg.find("contact.coefficient: expected a number"), std::string::npos) << msg;
+  msg = problems_of(kValid, {"contact={model=\"friction\"}"});
+  EXPECT_NE(msg.find("contact.coefficient: expected a number"), std::string::npos) << msg;
+  msg = problems_of(kValid, {"contact={model=\"release\"}", "solver.scheme=\"usf\""});
+  EXPECT_NE(msg.find("contact.model: contact models work with solver.scheme"), std::string::npos)
+      << msg;
+  msg = problems_of(kValid, {"contact={model=\"single-field\", criterion=\"both\"}"});
+  EXPECT_NE(msg.find("contact.criterion: unknown key"), std::string::npos) << msg;
+  EXPECT_EQ(problems_of(kValid, {"contact={model=\"friction\", coefficient=inf}"}), "");
+}
+
 }  // namespace
 }  // namespace pellicle

@@ -64,8 +64,8 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                    "membrane would break (thesis §5.4.4): reduce its spacing\n",
                    b.name.c_str());
   }
-  const bool flip = c.transfer.update == VelocityUpdate::flip ||
-                    c.transfer.update == VelocityUpdate::blend;
+  const bool flip =
+      c.transfer.update == VelocityUpdate::flip || c.transfer.update == VelocityUpdate::blend;
   for (const auto& b : p.bodies)
     if (flip && s.material(b.material).is_fluid())
       std::fprintf(out,
@@ -74,6 +74,8 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                    "velocity_update = \"apic\" with a B-spline kernel, or \"pic\", avoids it "
                    "(docs/theory/gas.md)\n",
                    b.name.c_str());
+  std::fprintf(out, "contact   %s\n",
+               s.contact() ? s.contact()->describe().c_str() : "single field (standard MPM)");
   std::fprintf(out, "points    %ld in all\n", p.size());
   std::fprintf(out, "time      end %g, dt %.6g (%s), CFL number %.3g, about %.0f steps\n",
                c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,

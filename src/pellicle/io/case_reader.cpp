@@ -428,6 +428,7 @@ void read_contact(TomlParameters& root, Case<D>& c) {
   for (const auto& b : c.bodies) names.push_back(b.name);
   for (const auto& m : contact_models<D>())
     if (m.name == model) c.contact = m.make(*t, names);
+
   if (c.contact && c.settings.scheme == UpdateScheme::usf)
     t->fail("model", "contact models work with solver.scheme = \"musl\" or \"usl\", not \"usf\"");
 }

@@ -113,7 +113,9 @@ bool TomlParameters::read_number(const toml::node& node, std::string_view key, N
   std::optional<double> v;
   if (node.is_floating_point()) v = node.value<double>();
   if (node.is_integer()) v = static_cast<double>(*node.value<int64_t>());
-  if (!v || !std::isfinite(*v) || !range.admits(*v)) {
+  // Infinity only where the range reaches it (a friction coefficient of inf: no slip).
+  const bool infinite_allowed = v && *v > 0.0 && std::isinf(range.max);
+  if (!v || std::isnan(*v) || (std::isinf(*v) && !infinite_allowed) || !range.admits(*v)) {
     wrong(&node, key, range.describe());
     return false;
   }

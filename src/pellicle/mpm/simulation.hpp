@@ -68,6 +68,8 @@ class Simulation {
   //! Use a contact model (each body in its own grid field); without one every body moves
   //! in the single centre-of-mass field.
   void set_contact(std::unique_ptr<ContactModel<D>> model);
+  //! The contact model, or null (single centre-of-mass field).
+  const ContactModel<D>* contact() const { return contact_.get(); }
   //! Total contact force on each body in the last step; null without a contact model.
   const std::vector<Vec<D>>* contact_forces() const {
     return fields_ ? &fields_->contact_force() : nullptr;

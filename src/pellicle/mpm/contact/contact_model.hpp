@@ -23,6 +23,8 @@ class ContactModel {
   //! (Lagrangian pass) and again on the convected velocities of the MUSL remap.
   virtual void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass,
                        const Particles<D>& points, double dt, ContactPass pass) const = 0;
+  //! One line for run summaries, e.g. "release, criterion both".
+  virtual std::string describe() const = 0;
 };
 
 //! Builds a model from the [contact] table; `body_names` lets it refer to bodies.

@@ -6,7 +6,9 @@
 // keeps its own velocity (free separation).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 #include "pellicle/mpm/contact/contact_model.hpp"
 
@@ -17,6 +19,12 @@ template <int D>
 class Friction final : public ContactModel<D> {
  public:
   explicit Friction(double coefficient) : mu_(coefficient) {}
+
+  std::string describe() const override {
+    char text[64];
+    std::snprintf(text, sizeof text, "friction, μ = %g", mu_);
+    return std::isinf(mu_) ? "friction, no slip" : text;
+  }
 
   void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
                double dt, ContactPass pass) const override {

@@ -22,7 +22,14 @@ enum class ReleaseCriterion { body_body, body_centre_of_mass, both };
 template <int D>
 class Release final : public ContactModel<D> {
  public:
-  Release(ReleaseCriterion criterion, int master) : criterion_(criterion), master_(master) {}
+  Release(ReleaseCriterion criterion, int master, std::string master_name)
+      : criterion_(criterion), master_(master), master_name_(std::move(master_name)) {}
+
+  std::string describe() const override {
+    const char* names[] = {"body-body (eq 9.7)", "body-centre-of-mass (eq 9.8)", "both (eq 9.9)"};
+    return std::string("release, criterion ") + names[static_cast<int>(criterion_)] + ", master '" +
+           master_name_ + "'";
+  }
 
   void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
                double dt, ContactPass pass) const override {
@@ -62,6 +69,7 @@ class Release final : public ContactModel<D> {
 
   ReleaseCriterion criterion_;
   int master_;
+  std::string master_name_;
   mutable std::vector<char> released_;  //!< per node, this step's decision
 };
 
@@ -85,7 +93,7 @@ std::unique_ptr<ContactModel<D>> make_release(ParameterReader& in,
                              : criterion == "body-centre-of-mass"
                                  ? ReleaseCriterion::body_centre_of_mass
                                  : ReleaseCriterion::both;
-  return std::make_unique<Release<D>>(c, master);
+  return std::make_unique<Release<D>>(c, master, body_names.empty() ? "" : body_names[master]);
 }
 
 template std::unique_ptr<ContactModel<2>> make_release<2>(ParameterReader&,
