@@ -9,12 +9,16 @@ namespace {
 
 using namespace pellicle;
 
+//! Time steps of a simulation after two warm-up steps; items are particle-steps.
+void measure(benchmark::State& state, Simulation<2>& simulation) {
+  simulation.run(2);
+  for (auto _ : state) simulation.step();
+  state.SetItemsProcessed(state.iterations() * simulation.points().size());
+  state.counters["points"] = static_cast<double>(simulation.points().size());
+}
+
 void step(benchmark::State& state, const std::string& kernel, const std::string& update) {
-  auto simulation = make_bench_two_disks(state.range(0), kernel, update);
-  simulation->run(2);
-  for (auto _ : state) simulation->step();
-  state.SetItemsProcessed(state.iterations() * simulation->points().size());
-  state.counters["points"] = static_cast<double>(simulation->points().size());
+  measure(state, *make_bench_two_disks(state.range(0), kernel, update));
 }
 
 BENCHMARK_CAPTURE(step, linear_flip, "linear", "flip")->Arg(250000)->Unit(benchmark::kMillisecond);
@@ -29,22 +33,14 @@ BENCHMARK_CAPTURE(step, cubic_flip, "cubic-bspline", "flip")
     ->Unit(benchmark::kMillisecond);
 
 void release_step(benchmark::State& state) {
-  auto simulation =
-      make_bench_two_disks(state.range(0), "linear", "flip", {"contact={model=\"release\"}"});
-  simulation->run(2);
-  for (auto _ : state) simulation->step();
-  state.SetItemsProcessed(state.iterations() * simulation->points().size());
-  state.counters["points"] = static_cast<double>(simulation->points().size());
+  measure(state,
+          *make_bench_two_disks(state.range(0), "linear", "flip", {"contact={model=\"release\"}"}));
 }
 
 BENCHMARK(release_step)->Arg(250000)->Unit(benchmark::kMillisecond);
 
 void gas_step(benchmark::State& state, const std::string& kernel, const std::string& update) {
-  auto simulation = make_bench_gas_box(state.range(0), kernel, update);
-  simulation->run(2);
-  for (auto _ : state) simulation->step();
-  state.SetItemsProcessed(state.iterations() * simulation->points().size());
-  state.counters["points"] = static_cast<double>(simulation->points().size());
+  measure(state, *make_bench_gas_box(state.range(0), kernel, update));
 }
 
 BENCHMARK_CAPTURE(gas_step, quadratic_apic, "quadratic-bspline", "apic")
