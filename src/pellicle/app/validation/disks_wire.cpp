@@ -131,6 +131,7 @@ Outcome offset_disks(Resolution) {
                                  {"body[0].region={shape=\"disk\", center=[3.5, 5.6], radius=1.0}",
                                   "body[1].region={shape=\"disk\", center=[6.5, 4.4], radius=1.0}",
                                   "body[1].velocity=[-1.0, 0.0]"});
+  const double e0 = s->state().total();
   Series series{"offset_disks_spin",
                 "Offset disks: angular velocities (counter-clockwise > 0)",
                 {"time", "disk I", "disk II"},
@@ -155,10 +156,12 @@ Outcome offset_disks(Resolution) {
                         pinching_I / std::max(pinching, 1), 0.0, -1e9, 0.0, "rad/s"});
   out.checks.push_back({"disk II, mean angular velocity while pinching (clockwise < 0)",
                         pinching_II / std::max(pinching, 1), 0.0, -1e9, 0.0, "rad/s"});
-  char row[256];
+  char row[320];
   std::snprintf(row, sizeof row,
-                "| after release (paper: counter-clockwise, > 0) | %.4f | %.4f |\n",
-                after_I / std::max(after, 1), after_II / std::max(after, 1));
+                "| after release (paper: counter-clockwise, > 0) | %.4f | %.4f |\n\n"
+                "Energy at t = 5 / start: %.3f.\n",
+                after_I / std::max(after, 1), after_II / std::max(after, 1),
+                s->state().total() / e0);
   out.table = "| mean angular velocity | disk I | disk II |\n|---|---|---|\n" + std::string(row);
   out.series.push_back(std::move(series));
   return out;
