@@ -48,11 +48,11 @@ struct BodySpec {
   double thickness = 0.0;
   std::string frames = "connectivity";
   NormalOrientation orientation = NormalOrientation::propagate;
-  std::vector<std::pair<long, double>> point_masses;  //!< (index in body, mass) overrides
+  std::vector<std::pair<long, double>> point_masses;      //!< (index in body, mass) overrides
   std::vector<std::pair<long, Vec<D>>> point_velocities;  //!< (index in body, velocity) overrides
   std::optional<double> density;  //!< overrides the material's reference density
   double internal_energy = 0.0;   //!< fluids: initial specific internal energy e
-  SourceLocation where;  //!< the body's table, for problems found when filling it
+  SourceLocation where;           //!< the body's table, for problems found when filling it
 };
 
 template <int D>

@@ -202,8 +202,7 @@ class TransferImpl final : public Transfer<D> {
   //! The one scatter loop: mass and momentum (WithMass), forces (WithForce), the APIC affine
   //! momentum term (Affine); MomentumOnly is the MUSL remap (mass already on the grid).
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly = false>
-  void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
-               PointRange range) {
+  void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, PointRange range) {
     constexpr bool with_momentum = WithMass || MomentumOnly;
     const long n = range.last(points.size());
     const auto& strides = grid.strides();
