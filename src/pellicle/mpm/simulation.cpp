@@ -59,19 +59,18 @@ template <int D>
 void Simulation<D>::prescribe_rigid_nodes() {
   // The centre-of-mass field takes every rigid body's velocity; with a contact model each
   // body's own field takes only its own, so the others meet it through the contact rule.
-  std::vector<std::pair<long, Vec<D>>> prescribed, own;
+  std::vector<std::pair<long, Vec<D>>> prescribed;
   std::vector<long> nodes;
   for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
     const auto& body = points_.bodies[b];
     if (!materials_[body.material]->is_rigid()) continue;
     nodes.clear();
     transfer_->touched_nodes(grid_, body.begin, body.end, nodes);
-    own.clear();
-    for (long n : nodes) {
-      prescribed.emplace_back(n, points_.velocity[body.begin]);
-      own.emplace_back(n, points_.velocity[body.begin]);
-    }
-    if (fields_) fields_->body_grid(static_cast<int>(b)).prescribe(own);
+    const std::size_t first = prescribed.size();
+    for (long n : nodes) prescribed.emplace_back(n, points_.velocity[body.begin]);
+    if (fields_)
+      fields_->body_grid(static_cast<int>(b))
+          .prescribe({prescribed.begin() + first, prescribed.end()});
   }
   grid_.prescribe(std::move(prescribed));
 }
