@@ -1,0 +1,182 @@
+#include "pellicle/surface/frames.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <deque>
+
+#include "pellicle/core/error.hpp"
+
+namespace pellicle {
+
+namespace {
+
+//! A unit vector orthogonal to n: `previous` projected into the plane normal to n when it
+//! lies off the normal, else the coordinate axis least aligned with n.
+Vec3 tangent_in_plane(const Vec3& n, const Vec3& previous) {
+  Vec3 t = previous - previous.dot(n) * n;
+  if (t.squaredNorm() > 1e-6) return t.normalized();
+  int axis = 0;
+  n.cwiseAbs().minCoeff(&axis);
+  t = Vec3::Unit(axis) - n[axis] * n;
+  return t.normalized();
+}
+
+template <int D>
+Mat<D> frame_from(const Vec<D>& n, const Vec<D>& first_tangent_hint) {
+  Mat<D> f;
+  if constexpr (D == 2) {
+    (void)first_tangent_hint;
+    f.col(0) = Vec2(n.y(), -n.x());  // (t, n) right-handed
+    f.col(1) = n;
+  } else {
+    const Vec3 t1 = tangent_in_plane(n, first_tangent_hint);
+    f.col(0) = t1;
+    f.col(1) = n.cross(t1);
+    f.col(2) = n;
+  }
+  return f;
+}
+
+//! The eq 4 matrix Σ W d dᵀ/|d|² over the neighbours of i (only boundary ones if asked).
+template <int D>
+Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, std::size_t i,
+                        double c, bool boundary_only, int& used) {
+  Mat<D> m = Mat<D>::Zero();
+  used = 0;
+  const Vec<D>& x = cloud.position[i];
+  const double h = cloud.smoothing_length[i];
+  for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) {
+    const int j = nb.index[k];
+    if (boundary_only && !cloud.boundary[j]) continue;
+    const Vec<D> d = cloud.position[j] - x;
+    const double r2 = d.squaredNorm();
+    if (r2 == 0.0) continue;
+    m += gaussian_weight(r2, h, c) / r2 * d * d.transpose();
+    ++used;
+  }
+  return m;
+}
+
+[[noreturn]] void too_few(std::size_t i, int found) {
+  throw NumericalError({0.0, 0, "surface", static_cast<long>(i)},
+                       "point " + std::to_string(i) + " has " + std::to_string(found) +
+                           " neighbours within its smoothing length, too few to define its "
+                           "normal: the cloud has a hole there (raise h or refine the cloud)");
+}
+
+}  // namespace
+
+template <int D>
+void set_normal(Mat<D>& f, const Vec<D>& n) {
+  f = frame_from<D>(n, f.col(0));
+}
+
+template <int D>
+void flip_normal(Mat<D>& f) {
+  f.col(D - 1) = -f.col(D - 1);
+  f.col(D - 2) = -f.col(D - 2);  // keeps det = +1
+}
+
+template <int D>
+void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const FrameOptions& options,
+                     bool keep_side) {
+  const long n = static_cast<long>(cloud.size());
+  const double c = options.weight_exponent;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    int used = 0;
+    const Mat<D> m = direction_matrix(cloud, nb, i, c, false, used);
+    if (used < D - 1 + (D == 3)) too_few(i, used);
+    const Mat<D> old = cloud.frame[i];
+    Vec<D> normal;
+    Vec<D> boundary_normal = Vec<D>::Zero();
+    const Vec<D> x = cloud.position[i];
+    bool done = false;
+    if constexpr (D == 3) {
+      int boundary_used = 0;
+      const Mat3 mb = cloud.boundary[i] ? direction_matrix(cloud, nb, i, c, true, boundary_used)
+                                        : Mat3::Zero();
+      if (boundary_used > 0) {
+        // §3.2 at the boundary: the boundary tangent from the boundary neighbours (their
+        // main direction), the normal minimising eq 4 among directions orthogonal to it.
+        Eigen::SelfAdjointEigenSolver<Mat3> along(mb);
+        const Vec3 tb = along.eigenvectors().col(2);
+        Eigen::Matrix<double, 3, 2> plane;
+        plane.col(0) = tangent_in_plane(tb, old.col(0));
+        plane.col(1) = tb.cross(plane.col(0));
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> in_plane(plane.transpose() * m * plane);
+        normal = (plane * in_plane.eigenvectors().col(0)).normalized();
+        boundary_normal = tb.cross(normal);
+        done = true;
+      }
+    }
+    if (!done) {
+      Eigen::SelfAdjointEigenSolver<Mat<D>> solver(m);
+      normal = solver.eigenvectors().col(0);  // smallest eigenvalue first
+      if constexpr (D == 2)
+        if (cloud.boundary[i]) boundary_normal = Vec2(normal.y(), -normal.x());
+    }
+    if (keep_side && normal.dot(old.col(D - 1)) < 0.0) normal = -normal;  // eq 5
+    if (cloud.boundary[i]) {
+      // ν points out of the manifold: away from the neighbours.
+      Vec<D> towards = Vec<D>::Zero();
+      for (long k = nb.begin(i) + 1; k < nb.end(i); ++k)
+        towards += cloud.position[nb.index[k]] - x;
+      if (boundary_normal.dot(towards) > 0.0) boundary_normal = -boundary_normal;
+      cloud.boundary_normal[i] = boundary_normal;
+    }
+    Vec<D> hint = old.col(0);
+    if (cloud.boundary[i] && D == 3) hint = boundary_normal;
+    cloud.frame[i] = frame_from<D>(normal, hint);
+  }
+}
+
+template <int D>
+void orient_consistently(PointCloud<D>& cloud, const NeighbourLists& nb,
+                         const std::vector<Vec<D>>* reference) {
+  const std::size_t n = cloud.size();
+  std::vector<std::uint8_t> seen(n, 0);
+  std::deque<int> queue;
+  std::vector<int> piece;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (seen[seed]) continue;
+    piece.clear();
+    seen[seed] = 1;
+    queue.push_back(static_cast<int>(seed));
+    while (!queue.empty()) {
+      const int i = queue.front();
+      queue.pop_front();
+      piece.push_back(i);
+      const Vec<D> ni = cloud.normal(i);
+      for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) {
+        const int j = nb.index[k];
+        if (seen[j]) continue;
+        seen[j] = 1;
+        if (cloud.normal(j).dot(ni) < 0.0) flip_normal<D>(cloud.frame[j]);
+        queue.push_back(j);
+      }
+    }
+    // One sign for the whole piece: along the reference normals, else outward.
+    double agreement = 0.0;
+    Vec<D> centroid = Vec<D>::Zero();
+    for (int i : piece) centroid += cloud.position[i];
+    centroid /= static_cast<double>(piece.size());
+    for (int i : piece)
+      agreement += reference ? cloud.normal(i).dot((*reference)[i])
+                             : cloud.normal(i).dot(cloud.position[i] - centroid);
+    if (agreement < 0.0)
+      for (int i : piece) flip_normal<D>(cloud.frame[i]);
+  }
+}
+
+template void set_normal<2>(Mat<2>&, const Vec2&);
+template void set_normal<3>(Mat<3>&, const Vec3&);
+template void flip_normal<2>(Mat<2>&);
+template void flip_normal<3>(Mat<3>&);
+template void estimate_frames<2>(PointCloud<2>&, const NeighbourLists&, const FrameOptions&, bool);
+template void estimate_frames<3>(PointCloud<3>&, const NeighbourLists&, const FrameOptions&, bool);
+template void orient_consistently<2>(PointCloud<2>&, const NeighbourLists&,
+                                     const std::vector<Vec2>*);
+template void orient_consistently<3>(PointCloud<3>&, const NeighbourLists&,
+                                     const std::vector<Vec3>*);
+
+}  // namespace pellicle

@@ -1,0 +1,119 @@
+#include "pellicle/surface/neighbours.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <nanoflann.hpp>
+
+namespace pellicle {
+
+template <int D>
+struct NeighbourSearch<D>::Tree {
+  //! The positions the tree was built on; points have moved at most `drift_` from them.
+  struct Snapshot {
+    std::vector<Vec<D>> x;
+    std::size_t kdtree_get_point_count() const { return x.size(); }
+    double kdtree_get_pt(std::size_t i, std::size_t d) const { return x[i][d]; }
+    template <class Box>
+    bool kdtree_get_bbox(Box&) const {
+      return false;
+    }
+  };
+  using Index = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Snapshot>,
+                                                    Snapshot, D, unsigned>;
+  Snapshot snapshot;
+  std::unique_ptr<Index> index;
+
+  void build(const std::vector<Vec<D>>& x) {
+    snapshot.x = x;
+    index = std::make_unique<Index>(D, snapshot, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    index->buildIndex();
+  }
+  //! Candidates within `radius` of q in the snapshot.
+  void query(const Vec<D>& q, double radius,
+             std::vector<std::pair<unsigned, double>>& matches) const {
+    matches.clear();
+    nanoflann::SearchParams params;
+    params.sorted = false;
+    index->radiusSearch(q.data(), radius * radius, matches, params);
+  }
+};
+
+template <int D>
+NeighbourSearch<D>::NeighbourSearch(double rebuild_fraction)
+    : rebuild_fraction_(rebuild_fraction) {}
+template <int D>
+NeighbourSearch<D>::~NeighbourSearch() = default;
+
+template <int D>
+void NeighbourSearch<D>::refresh(const PointCloud<D>& cloud) {
+  const std::size_t n = cloud.size();
+  bool rebuild = !tree_ || generation_ != cloud.generation() || tree_->snapshot.x.size() != n;
+  if (!rebuild) {
+    double drift = 0.0, h_min = 1e300;
+#pragma omp parallel for reduction(max : drift) reduction(min : h_min)
+    for (std::size_t i = 0; i < n; ++i) {
+      drift = std::max(drift, (cloud.position[i] - tree_->snapshot.x[i]).norm());
+      h_min = std::min(h_min, cloud.smoothing_length[i]);
+    }
+    drift_ = drift;
+    rebuild = drift > rebuild_fraction_ * h_min;
+  }
+  if (rebuild) {
+    if (!tree_) tree_ = std::make_unique<Tree>();
+    tree_->build(cloud.position);
+    generation_ = cloud.generation();
+    drift_ = 0.0;
+    ++rebuilds_;
+  }
+}
+
+template <int D>
+void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
+                              double radius_factor) {
+  refresh(cloud);
+  const std::size_t n = cloud.size();
+  lists.offset.assign(n + 1, 0);
+  // Each thread takes one contiguous block of points, so the blocks joined in thread order
+  // are the lists in point order.
+  std::vector<std::vector<int>> found(omp_get_max_threads());
+#pragma omp parallel
+  {
+    auto& mine = found[omp_get_thread_num()];
+    mine.clear();
+    std::vector<std::pair<unsigned, double>> matches;
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec<D>& x = cloud.position[i];
+      const double h = radius_factor * cloud.smoothing_length[i];
+      tree_->query(x, h + drift_, matches);
+      const std::size_t start = mine.size();
+      mine.push_back(static_cast<int>(i));
+      for (const auto& [j, ignored] : matches)
+        if (j != i && (cloud.position[j] - x).squaredNorm() <= h * h)
+          mine.push_back(static_cast<int>(j));
+      std::sort(mine.begin() + start + 1, mine.end());  // independent of the tree's order
+      lists.offset[i + 1] = static_cast<long>(mine.size() - start);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) lists.offset[i + 1] += lists.offset[i];
+  lists.index.clear();
+  lists.index.reserve(lists.offset[n]);
+  for (const auto& block : found) lists.index.insert(lists.index.end(), block.begin(), block.end());
+}
+
+template <int D>
+void NeighbourSearch<D>::around(const PointCloud<D>& cloud, const Vec<D>& x, double radius,
+                                std::vector<int>& out) const {
+  thread_local std::vector<std::pair<unsigned, double>> matches;
+  tree_->query(x, radius + drift_, matches);
+  out.clear();
+  for (const auto& [j, ignored] : matches)
+    if ((cloud.position[j] - x).squaredNorm() <= radius * radius) out.push_back(static_cast<int>(j));
+  std::sort(out.begin(), out.end());
+}
+
+template class NeighbourSearch<2>;
+template class NeighbourSearch<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,54 @@
+#include "pellicle/surface/sparse_system.hpp"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+#include <cstdio>
+
+#include "pellicle/core/error.hpp"
+
+namespace pellicle {
+
+struct SparseSystem::Solver {
+  using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+  Matrix matrix;
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::BiCGSTAB<Matrix, Eigen::IncompleteLUT<double>> bicgstab;
+};
+
+SparseSystem::SparseSystem() : solver_(std::make_unique<Solver>()) {}
+SparseSystem::~SparseSystem() = default;
+
+LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::vector<double>& rhs,
+                                      std::vector<double>& x,
+                                      const LinearSolverOptions& options) {
+  const long n = static_cast<long>(lists.points());
+  auto& s = *solver_;
+  s.triplets.clear();
+  s.triplets.reserve(lists.index.size());
+  for (long i = 0; i < n; ++i)
+    for (long k = lists.begin(i); k < lists.end(i); ++k)
+      if (values[k] != 0.0) s.triplets.emplace_back(i, lists.index[k], values[k]);
+  s.matrix.resize(n, n);
+  s.matrix.setFromTriplets(s.triplets.begin(), s.triplets.end());
+  s.bicgstab.setTolerance(options.tolerance);
+  s.bicgstab.setMaxIterations(options.max_iterations);
+  s.bicgstab.compute(s.matrix);
+  if (s.bicgstab.info() != Eigen::Success)
+    throw NumericalError({}, "the incomplete-LU factorisation of the implicit step's matrix "
+                             "failed (a zero pivot: an isolated point or a singular stencil)");
+  const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), n);
+  Eigen::Map<Eigen::VectorXd> solution(x.data(), n);
+  solution = s.bicgstab.solveWithGuess(b, Eigen::VectorXd(solution));
+  LinearSolveReport report{static_cast<int>(s.bicgstab.iterations()), s.bicgstab.error()};
+  if (s.bicgstab.info() != Eigen::Success || !std::isfinite(report.residual)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "BiCGSTAB did not converge: relative residual %.3g after %d iterations "
+                  "(tolerance %.3g); lower the time step or raise solver.max_iterations",
+                  report.residual, report.iterations, options.tolerance);
+    throw NumericalError({}, text);
+  }
+  return report;
+}
+
+}  // namespace pellicle
