@@ -46,8 +46,7 @@ template <int D>
 void expect_lists_match(const PointCloud<D>& c, const NeighbourLists& nb) {
   for (std::size_t i = 0; i < c.size(); ++i) {
     ASSERT_EQ(nb.index[nb.begin(i)], static_cast<int>(i));  // self first
-    const std::vector<int> found(nb.index.begin() + nb.begin(i) + 1,
-                                 nb.index.begin() + nb.end(i));
+    const std::vector<int> found(nb.index.begin() + nb.begin(i) + 1, nb.index.begin() + nb.end(i));
     ASSERT_EQ(found, brute_force(c, i)) << "point " << i;
   }
 }

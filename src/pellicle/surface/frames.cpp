@@ -93,8 +93,8 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
     bool done = false;
     if constexpr (D == 3) {
       int boundary_used = 0;
-      const Mat3 mb = cloud.boundary[i] ? direction_matrix(cloud, nb, i, c, true, boundary_used)
-                                        : Mat3::Zero();
+      const Mat3 mb =
+          cloud.boundary[i] ? direction_matrix(cloud, nb, i, c, true, boundary_used) : Mat3::Zero();
       if (boundary_used > 0) {
         // §3.2 at the boundary: the boundary tangent from the boundary neighbours (their
         // main direction), the normal minimising eq 4 among directions orthogonal to it.
@@ -119,8 +119,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
     if (cloud.boundary[i]) {
       // ν points out of the manifold: away from the neighbours.
       Vec<D> towards = Vec<D>::Zero();
-      for (long k = nb.begin(i) + 1; k < nb.end(i); ++k)
-        towards += cloud.position[nb.index[k]] - x;
+      for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) towards += cloud.position[nb.index[k]] - x;
       if (boundary_normal.dot(towards) > 0.0) boundary_normal = -boundary_normal;
       cloud.boundary_normal[i] = boundary_normal;
     }

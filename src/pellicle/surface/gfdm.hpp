@@ -53,8 +53,8 @@ double laplace_beltrami(const NeighbourLists& nb, const SurfaceStencils<D>& st, 
 
 //! ∇_M · v at point i (eq 24).
 template <int D>
-double surface_divergence(const NeighbourLists& nb, const SurfaceStencils<D>& st,
-                          std::size_t i, const std::vector<Vec<D>>& v) {
+double surface_divergence(const NeighbourLists& nb, const SurfaceStencils<D>& st, std::size_t i,
+                          const std::vector<Vec<D>>& v) {
   double d = 0.0;
   for (long k = nb.begin(i); k < nb.end(i); ++k) d += st.gradient[k].dot(v[nb.index[k]]);
   return d;

@@ -109,7 +109,8 @@ void NeighbourSearch<D>::around(const PointCloud<D>& cloud, const Vec<D>& x, dou
   tree_->query(x, radius + drift_, matches);
   out.clear();
   for (const auto& [j, ignored] : matches)
-    if ((cloud.position[j] - x).squaredNorm() <= radius * radius) out.push_back(static_cast<int>(j));
+    if ((cloud.position[j] - x).squaredNorm() <= radius * radius)
+      out.push_back(static_cast<int>(j));
   std::sort(out.begin(), out.end());
 }
 

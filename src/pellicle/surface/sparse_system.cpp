@@ -19,8 +19,7 @@ SparseSystem::SparseSystem() : solver_(std::make_unique<Solver>()) {}
 SparseSystem::~SparseSystem() = default;
 
 LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::vector<double>& rhs,
-                                      std::vector<double>& x,
-                                      const LinearSolverOptions& options) {
+                                      std::vector<double>& x, const LinearSolverOptions& options) {
   const long n = static_cast<long>(lists.points());
   auto& s = *solver_;
   s.triplets.clear();
@@ -34,8 +33,9 @@ LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::ve
   s.bicgstab.setMaxIterations(options.max_iterations);
   s.bicgstab.compute(s.matrix);
   if (s.bicgstab.info() != Eigen::Success)
-    throw NumericalError({}, "the incomplete-LU factorisation of the implicit step's matrix "
-                             "failed (a zero pivot: an isolated point or a singular stencil)");
+    throw NumericalError({},
+                         "the incomplete-LU factorisation of the implicit step's matrix "
+                         "failed (a zero pivot: an isolated point or a singular stencil)");
   const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), n);
   Eigen::Map<Eigen::VectorXd> solution(x.data(), n);
   solution = s.bicgstab.solveWithGuess(b, Eigen::VectorXd(solution));
