@@ -24,9 +24,6 @@ struct SurfaceStencils {
   std::vector<double> laplacian;  //!< c^{Δ_M} of eq 25
 };
 
-//! Largest neighbourhood a stencil takes (r_min = 0.2 allows about 100 points within h).
-constexpr int kMaxStencilPoints = 160;
-
 //! Build every point's stencils. Throws NumericalError naming the point when its
 //! neighbourhood cannot fix a second-order fit (too few points, or all on one line).
 template <int D>

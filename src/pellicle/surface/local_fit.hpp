@@ -1,0 +1,88 @@
+#pragma once
+//! The local constrained weighted least squares behind every GFDM stencil (Suchde & Kuhnert
+//! eqs 18–19 and 26–27) and every interpolation to a new point: around a centre with a
+//! tangent frame and a smoothing length h, find coefficients c_k of the neighbours' values
+//! that reproduce a linear functional (a derivative at the centre, or the value there) of
+//! every monomial up to order 2 in the tangent coordinates, minimising Σ_k (c_k / W_k)².
+//! Header-only so the fixed-size loops inline where they are used.
+
+#include <Eigen/QR>
+
+#include "pellicle/core/types.hpp"
+#include "pellicle/surface/frames.hpp"
+
+namespace pellicle {
+
+//! Largest neighbourhood a fit takes (r_min = 0.2 allows about 100 points within h).
+constexpr int kMaxStencilPoints = 160;
+
+//! Monomials up to order 2 in the tangent coordinates s (in units of h): 1, s, s² on a
+//! curve; 1, s1, s2, s1², s1 s2, s2² on a surface.
+template <int D>
+constexpr int kMonomials = D == 2 ? 3 : 6;
+
+template <int D>
+Eigen::Matrix<double, 1, kMonomials<D>> monomials(const Eigen::Matrix<double, D - 1, 1>& s) {
+  Eigen::Matrix<double, 1, kMonomials<D>> m;
+  if constexpr (D == 2)
+    m << 1.0, s[0], s[0] * s[0];
+  else
+    m << 1.0, s[0], s[1], s[0] * s[0], s[0] * s[1], s[1] * s[1];
+  return m;
+}
+
+//! b: one column per functional, its values on the monomials (e.g. ∂/∂s_1: (0, 1/h, 0, …)).
+template <int D, int M>
+using FitTargets = Eigen::Matrix<double, kMonomials<D>, M>;
+//! One row per neighbour, one column per functional.
+template <int D, int M>
+using FitCoefficients =
+    Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::ColMajor, kMaxStencilPoints, M>;
+
+enum class FitStatus { ok, too_few, too_many, degenerate };
+
+//! Explains a failed fit in words for error messages.
+inline const char* describe(FitStatus s) {
+  switch (s) {
+    case FitStatus::too_few:
+      return "fewer neighbours than monomials to fit";
+    case FitStatus::too_many:
+      return "more neighbours than a stencil takes";
+    case FitStatus::degenerate:
+      return "its neighbours do not spread in every tangent direction";
+    default:
+      return "fit";
+  }
+}
+
+//! `offsets[k]` = x_k − centre. Neighbours are projected along the normal onto the tangent
+//! plane spanned by `tangents` (§4.1.1, Fig. 12). The solution is c = W Q R^{-T} b, with
+//! A = W M = Q R (M the monomials at the neighbours, W their Gaussian weights).
+template <int D, int M>
+FitStatus fit_coefficients(const Vec<D>* offsets, int count,
+                           const Eigen::Matrix<double, D, D - 1>& tangents, double h,
+                           double weight_exponent, const FitTargets<D, M>& b,
+                           FitCoefficients<D, M>& c) {
+  constexpr int P = kMonomials<D>;
+  using Block = Eigen::Matrix<double, Eigen::Dynamic, P, Eigen::ColMajor, kMaxStencilPoints, P>;
+  if (count > kMaxStencilPoints) return FitStatus::too_many;
+  if (count < P) return FitStatus::too_few;
+  Block a(count, P);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxStencilPoints, 1> w(count);
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Matrix<double, D - 1, 1> s = tangents.transpose() * offsets[k] / h;
+    w[k] = gaussian_weight(offsets[k].squaredNorm(), h, weight_exponent);
+    a.row(k) = w[k] * monomials<D>(s);
+  }
+  Eigen::HouseholderQR<Block> qr(a);
+  const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
+  if (diagonal.minCoeff() < 1e-9 * diagonal.maxCoeff()) return FitStatus::degenerate;
+  const auto r = qr.matrixQR().template topRows<P>().template triangularView<Eigen::Upper>();
+  c.setZero(count, M);
+  c.template topRows<P>() = r.transpose().solve(b);
+  c.applyOnTheLeft(qr.householderQ());
+  for (int k = 0; k < count; ++k) c.row(k) *= w[k];
+  return FitStatus::ok;
+}
+
+}  // namespace pellicle
