@@ -13,6 +13,7 @@
 #include "pellicle/surface/movement.hpp"
 #include "pellicle/surface/neighbours.hpp"
 #include "pellicle/surface/sparse_system.hpp"
+#include "pellicle/surface/spectrum.hpp"
 #include "support/test_clouds.hpp"
 
 namespace pellicle {
@@ -137,9 +138,9 @@ TEST(SurfaceGfdm, ExactForQuadraticsInThePlane) {
 }
 
 // Δ_M (xy) = −6 xy/r², ∇_M · n = 2/r on a sphere. With the eq 4 normals alone the curvature
-// error stalls at 1.8 % (their O(h) tilt on an uneven cloud); with the refined normals it
-// falls as h² (1.7e-4, 4.1e-5, 1.0e-5). The Laplace–Beltrami stencil's own truncation error
-// on an irregular cloud is first order (7.3e-3, 3.1e-3, 1.7e-3 relative).
+// error stalls at 3 % (their O(h) tilt on an uneven cloud); with the refined normals it
+// falls as h² (2.3e-4, 5.7e-5, 1.4e-5). The Laplace–Beltrami stencil's own truncation error
+// on an irregular cloud is first order (6.8e-3, 3.3e-3, 1.7e-3 relative).
 struct SphereErrors {
   std::vector<double> laplacian, curvature;
 };
@@ -228,6 +229,23 @@ TEST(SurfaceSparseSystem, ImplicitDiffusionSolve) {
     norm += b[i] * b[i] / std::pow(1 + 6 * dt, 2);
   }
   EXPECT_LT(std::sqrt(err / norm), 5e-3);
+}
+
+// −Δ_M on the unit sphere: l(l + 1) = 0, 2 (×3), 6 (×5), 12 (×7).
+TEST(SurfaceSpectrum, SphereEigenvalues) {
+  auto c = test::jittered_sphere(1.0, 0.2);
+  NeighbourLists nb;
+  SurfaceStencils<3> st;
+  prepare(c, nb, st, true);
+  const SpectrumReport r = laplace_beltrami_spectrum<3>(nb, st, 16);
+  ASSERT_EQ(r.eigenvalues.size(), 16u);
+  EXPECT_NEAR(r.eigenvalues[0], 0.0, 1e-8);
+  for (int k = 1; k <= 3; ++k) EXPECT_NEAR(r.eigenvalues[k], 2.0, 0.02) << k;
+  for (int k = 4; k <= 8; ++k) EXPECT_NEAR(r.eigenvalues[k], 6.0, 0.06) << k;
+  for (int k = 9; k <= 15; ++k) EXPECT_NEAR(r.eigenvalues[k], 12.0, 0.12) << k;
+  std::printf("eigenvalues:");
+  for (double l : r.eigenvalues) std::printf(" %.4f", l);
+  std::printf("\nlargest imaginary part %.3g\n", r.largest_imaginary);
 }
 
 // A rigid rotation: eq 2 spirals outward as (1 + ω²Δt²)^(n/2), eq 3 stays on the circle.

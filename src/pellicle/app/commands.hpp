@@ -17,6 +17,10 @@ struct RunOptions {
 int command_run(const RunOptions& options);
 int command_check(const RunOptions& options);
 
+struct CaseSource;
+//! run/check of a case with a `[surface]` table (surface_run_command.cpp).
+int run_surface_case(const CaseSource& source, const RunOptions& options, bool check_only);
+
 struct BenchOptions {
   bool json = false;
   long points = 250000;

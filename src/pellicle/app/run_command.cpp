@@ -12,6 +12,7 @@
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/output.hpp"
 #include "pellicle/io/run.hpp"
+#include "pellicle/io/surface_case.hpp"
 
 namespace pellicle {
 
@@ -127,6 +128,7 @@ int run_or_check(const RunOptions& o, bool check_only) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   try {
     const auto source = load_case_source(o.case_path, o.overrides);
+    if (is_surface_case(*source)) return run_surface_case(*source, o, check_only);
     return case_dimension(*source) == 2 ? run_case<2>(*source, o, check_only)
                                         : run_case<3>(*source, o, check_only);
   } catch (const InputError& e) {

@@ -7,23 +7,18 @@
 
 #include "pellicle/geometry/region_factory.hpp"
 #include "pellicle/io/case.hpp"
+#include "pellicle/io/case_source.hpp"
 #include "pellicle/io/toml_parameters.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
 
-struct CaseSource {
-  std::string file;  //!< path as given, or "<default case>"
-  std::string text;
-  toml::table root;
-};
-
-namespace {
-
 SourceLocation location_of(const toml::source_region& src, const std::string& file) {
   return {src.path ? *src.path : file, static_cast<int>(src.begin.line),
           static_cast<int>(src.begin.column)};
 }
+
+namespace {
 
 toml::table parse(const std::string& text, const std::string& file) {
   try {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "pellicle/io/atomic_file.hpp"
+#include "pellicle/io/json_text.hpp"
 
 namespace pellicle {
 
@@ -26,25 +27,6 @@ Vec<D> body_sum(const Particles<D>& p, const BodyInfo<D>& body, bool velocity, d
   return s;
 }
 
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream out;
-  out << std::setprecision(12) << v;
-  return out.str();
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (c == '\n') {
-      out += "\\n";
-      continue;
-    }
-    out += c;
-  }
-  return out + "\"";
-}
 }  // namespace
 
 std::string hash_text(const std::string& text) {

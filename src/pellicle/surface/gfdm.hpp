@@ -13,7 +13,12 @@
 namespace pellicle {
 
 struct GfdmOptions {
-  double weight_exponent = 2.0;  //!< c of W = exp(−c r²/h²)
+  //! c of W = exp(−c r²/h²) (the paper does not give its width). With c = 2 the discrete
+  //! Laplace–Beltrami operator of an irregular cloud has spurious eigenvalues (between 6 and
+  //! 12 on the unit sphere at 6 points per h², negative ones at 9 and more); from c = 6 on
+  //! there are none up to 20 points per h², and the eigenvalues are the more accurate the
+  //! larger c (2.015, 2.009, 2.004 for c = 2, 4, 8 at h = 0.2): docs/theory/surface-gfdm.md.
+  double weight_exponent = 8.0;
 };
 
 //! Stencil coefficients aligned with the neighbour lists they were built on: entry k of

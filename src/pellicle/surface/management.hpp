@@ -12,16 +12,16 @@
 namespace pellicle {
 
 struct ManagementOptions {
-  double r_max = 0.45;  //!< no hole of circumradius r_max h (§2, §3.4)
-  double r_min = 0.2;   //!< no two points closer than r_min h (§2, §3.5)
+  double r_max = 0.45;               //!< no hole of circumradius r_max h (§2, §3.4)
+  double r_min = 0.2;                //!< no two points closer than r_min h (§2, §3.5)
   bool curvature_correction = true;  //!< move new points along n_approx (eqs 6–9)
   int max_fill_passes = 8;           //!< the filling is repeated for the new points (§3.4)
 };
 
 struct ManagementReport {
-  long added = 0;   //!< points created in holes
-  long merged = 0;  //!< pairs merged into one point
-  long removed = 0; //!< interior points dropped next to boundary points
+  long added = 0;    //!< points created in holes
+  long merged = 0;   //!< pairs merged into one point
+  long removed = 0;  //!< interior points dropped next to boundary points
   bool changed() const { return added + merged + removed > 0; }
 };
 

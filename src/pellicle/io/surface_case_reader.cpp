@@ -1,0 +1,164 @@
+#include <algorithm>
+#include <filesystem>
+
+#include "pellicle/io/case_source.hpp"
+#include "pellicle/io/surface_case.hpp"
+#include "pellicle/io/toml_parameters.hpp"
+
+namespace pellicle {
+
+bool is_surface_case(const CaseSource& source) {
+  return source.root.contains("surface");
+}
+
+int surface_case_dimension(const CaseSource& source) {
+  const toml::node* kind = source.root.at_path("surface.shape.kind").node();
+  const std::string name = kind && kind->is_string() ? kind->as_string()->get() : "";
+  const auto listed = [&](const std::vector<std::string>& kinds) {
+    return std::find(kinds.begin(), kinds.end(), name) != kinds.end();
+  };
+  const bool two = listed(surface_shape_kinds<2>()), three = listed(surface_shape_kinds<3>());
+  if (two && three) {  // a kind of both dimensions: the length of its points decides
+    const toml::node* first = source.root.at_path("surface.shape.centers[0]").node();
+    if (!first) first = source.root.at_path("surface.shape.center").node();
+    const toml::array* a = first ? first->as_array() : nullptr;
+    return a && a->size() == 2 ? 2 : 3;
+  }
+  return two ? 2 : 3;  // an unknown kind is reported by the 3D reader
+}
+
+namespace {
+
+template <int D>
+void read_velocity(TomlParameters& s, SurfaceCase<D>& c) {
+  for (auto& v : c.velocity) v = PointFormula("0");
+  if (!s.has("velocity")) return;
+  const toml::node* node = s.take("velocity");
+  const toml::array* list = node->as_array();
+  const bool formulas =
+      list && list->size() == D &&
+      std::all_of(list->begin(), list->end(), [](const toml::node& e) { return e.is_string(); });
+  if (!formulas) {
+    s.fail("velocity", "expected an array of " + std::to_string(D) + " formulas (strings), found " +
+                           describe_node(*node));
+    return;
+  }
+  for (int d = 0; d < D; ++d) {
+    try {
+      c.velocity[d] = PointFormula(list->get(d)->as_string()->get());
+    } catch (const ExpressionError& e) {
+      s.fail("velocity", "component " + std::to_string(d + 1) + ", column " +
+                             std::to_string(e.column()) + " of the formula: " + e.what());
+    }
+  }
+}
+
+template <int D>
+void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) {
+  auto s = root.sub_table("surface", true);
+  if (auto shape = s->sub_table("shape", true)) c.shape = make_surface_shape<D>(*shape);
+  c.smoothing_length = s->number("smoothing_length", NumberRange::positive());
+  auto& m = c.settings.management;
+  auto t = s->sub_table("management", false);
+  c.settings.manage = t->flag_or("enabled", true);
+  m.r_max = t->number_or("r_max", m.r_max, NumberRange::open_closed(0.0, 1.0));
+  m.r_min = t->number_or("r_min", m.r_min, NumberRange::open_closed(0.0, 1.0));
+  m.curvature_correction = t->flag_or("curvature_correction", true);
+  if (m.r_min >= m.r_max) t->fail("r_min", "expected r_min below r_max");
+  const double factor = s->number_or("spacing_factor", kPaperSpacingFactor,
+                                     NumberRange::closed(m.r_min, 2.0 * m.r_max));
+  c.spacing = factor * c.smoothing_length;
+  seed = static_cast<std::uint64_t>(s->integer_or("seed", 1, 0, 1L << 40));
+  c.settings.frames.weight_exponent = s->number_or(
+      "normal_weight_exponent", c.settings.frames.weight_exponent, NumberRange::positive());
+  c.settings.gfdm.weight_exponent = s->number_or(
+      "stencil_weight_exponent", c.settings.gfdm.weight_exponent, NumberRange::positive());
+  c.settings.refine_normals = s->flag_or("refine_normals", true);
+  c.settings.smooth_curvature = s->flag_or("smooth_curvature", true);
+  c.settings.rebuild_fraction =
+      s->number_or("rebuild_fraction", 0.25, NumberRange::open_closed(0.0, 1.0));
+  const std::string order = s->choice("movement", {"second-order", "first-order"}, "second-order");
+  c.settings.movement = order == "first-order" ? MovementOrder::first : MovementOrder::second;
+  read_velocity(*s, c);
+}
+
+template <int D>
+void read_pde(TomlParameters& root, SurfaceCase<D>& c) {
+  if (!root.has("pde")) return;  // the cloud only moves
+  auto p = root.sub_table("pde", true);
+  std::vector<std::string> names;
+  for (const auto& m : surface_pde_models<D>()) names.push_back(m.name);
+  const std::string model = p->choice("model", names);
+  for (const auto& m : surface_pde_models<D>())
+    if (m.name == model) c.pde = m.make(*p);
+  if (!c.pde) p->ignore_rest();
+}
+
+template <int D>
+void read_solver(TomlParameters& root, SurfaceCase<D>& c) {
+  auto s = root.sub_table("solver", true);
+  c.settings.end_time = s->number("end_time", NumberRange::positive());
+  c.settings.dt = s->number("dt", NumberRange::positive());
+  c.settings.solver.tolerance =
+      s->number_or("tolerance", 1e-10, NumberRange::open_closed(0.0, 1.0));
+  c.settings.solver.max_iterations =
+      static_cast<int>(s->integer_or("max_iterations", 500, 1, 1000000));
+  if (c.settings.dt > c.settings.end_time)
+    s->fail("dt", "expected a time step no longer than end_time");
+}
+
+template <int D>
+void read_output(TomlParameters& root, SurfaceCase<D>& c) {
+  auto o = root.sub_table("output", false);
+  c.output.directory = o->text_or("directory", "results/" + c.name);
+  c.output.history_interval =
+      o->number_or("history_interval", c.settings.end_time / 1000.0, NumberRange::non_negative());
+  c.output.snapshot_interval =
+      o->number_or("snapshot_interval", c.settings.end_time / 20.0, NumberRange::non_negative());
+  if (!o->has("monitors")) return;
+  auto monitors = o->sub_table("monitors", true);
+  const toml::node* node = o->take("monitors");
+  if (const toml::table* table = node ? node->as_table() : nullptr)
+    for (const auto& [key, value] : *table)
+      c.monitors.emplace_back(std::string(key.str()), read_formula(*monitors, key.str()));
+}
+
+}  // namespace
+
+template <int D>
+SurfaceCase<D> read_surface_case(const CaseSource& source) {
+  SurfaceCase<D> c;
+  c.file = source.file;
+  ProblemList problems{source.file, {}};
+  std::uint64_t seed = 1;
+  {
+    TomlParameters root(source.root, "", problems);
+    auto meta = root.sub_table("case", false);
+    c.name = meta->text_or("name", std::filesystem::path(source.file).stem().string());
+    c.title = meta->text_or("title", c.name);
+    c.source = meta->text_or("source", "");
+    read_surface(root, c, seed);
+    read_solver(root, c);
+    read_pde(root, c);
+    read_output(root, c);
+  }  // unknown keys are reported as the readers go out of scope
+  problems.throw_if_any();
+  c.sample = c.shape->sample({c.spacing, seed});
+  return c;
+}
+
+template <int D>
+std::unique_ptr<SurfaceSimulation<D>> build_surface_simulation(SurfaceCase<D>& c) {
+  PointCloud<D> cloud;
+  for (std::size_t i = 0; i < c.sample.size(); ++i)
+    cloud.add_point(c.sample.points[i], c.smoothing_length, c.sample.boundary[i] != 0);
+  return std::make_unique<SurfaceSimulation<D>>(std::move(cloud), c.settings, c.velocity,
+                                                std::move(c.pde), &c.sample.normals);
+}
+
+template SurfaceCase<2> read_surface_case<2>(const CaseSource&);
+template SurfaceCase<3> read_surface_case<3>(const CaseSource&);
+template std::unique_ptr<SurfaceSimulation<2>> build_surface_simulation<2>(SurfaceCase<2>&);
+template std::unique_ptr<SurfaceSimulation<3>> build_surface_simulation<3>(SurfaceCase<3>&);
+
+}  // namespace pellicle

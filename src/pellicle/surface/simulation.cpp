@@ -1,0 +1,142 @@
+#include "pellicle/surface/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "pellicle/core/error.hpp"
+
+namespace pellicle {
+
+template <int D>
+SurfaceSimulation<D>::SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings settings,
+                                        std::array<PointFormula, D> velocity,
+                                        std::unique_ptr<SurfacePde<D>> pde,
+                                        const std::vector<Vec<D>>* reference)
+    : cloud_(std::move(cloud)),
+      settings_(settings),
+      velocity_(std::move(velocity)),
+      pde_(std::move(pde)),
+      search_(settings.rebuild_fraction) {
+  search_.find(cloud_, neighbours_);
+  estimate_frames(cloud_, neighbours_, settings_.frames, false);
+  orient_consistently(cloud_, neighbours_, reference);  // the sweep of §3.2, once
+  update_geometry(true);
+  if (pde_) pde_->initialise(*this);
+}
+
+template <int D>
+void SurfaceSimulation<D>::update_geometry(bool keep_side) {
+  search_.find(cloud_, neighbours_);
+  estimate_frames(cloud_, neighbours_, settings_.frames, keep_side);
+  build_stencils(cloud_, neighbours_, settings_.gfdm, stencils_);
+  if (settings_.refine_normals) {
+    refine_normals(cloud_, neighbours_, stencils_);
+    build_stencils(cloud_, neighbours_, settings_.gfdm, stencils_);
+  }
+  mean_curvature(cloud_, neighbours_, stencils_, curvature_);
+  if (settings_.smooth_curvature) {
+    // eq 40–41: a wide Gaussian average over the support.
+    std::vector<double> smooth(curvature_.size());
+    const long n = static_cast<long>(cloud_.size());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      double sum = 0.0, weights = 0.0;
+      for (long k = neighbours_.begin(i); k < neighbours_.end(i); ++k) {
+        const int j = neighbours_.index[k];
+        const double w = gaussian_weight((cloud_.position[j] - cloud_.position[i]).squaredNorm(),
+                                         cloud_.smoothing_length[i], 1.0);
+        sum += w * curvature_[j];
+        weights += w;
+      }
+      smooth[i] = sum / weights;
+    }
+    curvature_.swap(smooth);
+  }
+  kappa_mean_ = 0.0;
+  for (double k : curvature_) kappa_mean_ += k;
+  kappa_mean_ /= std::max<std::size_t>(1, curvature_.size());
+}
+
+template <int D>
+PointValues SurfaceSimulation<D>::values_at(std::size_t i, double t) const {
+  PointValues v;
+  v.x = to_vec3<D>(cloud_.position[i]);
+  v.n = to_vec3<D>(cloud_.normal(i));
+  v.t = t;
+  const int phi = pde_ ? pde_->unknown() : -1;
+  v.phi = phi >= 0 ? cloud_.field(phi)[i] : 0.0;
+  v.kappa = curvature_.empty() ? 0.0 : curvature_[i];
+  v.kappa_mean = kappa_mean_;
+  v.h = cloud_.smoothing_length[i];
+  return v;
+}
+
+template <int D>
+void SurfaceSimulation<D>::evaluate_velocity(double t, std::vector<Vec<D>>& v) const {
+  const long n = static_cast<long>(cloud_.size());
+  v.resize(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const PointValues values = values_at(i, t);
+    for (int d = 0; d < D; ++d) v[i][d] = velocity_[d](values);
+  }
+}
+
+template <int D>
+void SurfaceSimulation<D>::step() {
+  const double dt = settings_.dt;
+  if (pde_) pde_->before_move(*this);
+  evaluate_velocity(time_, cloud_.velocity);    // 1. v⁽ⁿ⁾
+  move_points(cloud_, dt, settings_.movement);  // 2. eq 3 (eq 2 first)
+  time_ += dt;
+  update_geometry(true);   // 3. frames keep their side (eq 5)
+  if (settings_.manage) {  // 4. §3.4–3.5
+    const ManagementReport r =
+        manage_points(cloud_, search_, settings_.management, settings_.frames);
+    management_total_.added += r.added;
+    management_total_.merged += r.merged;
+    management_total_.removed += r.removed;
+    if (r.changed()) update_geometry(true);
+  }
+  if (pde_) {  // 5. implicit step with ∇_M · v⁽ⁿ⁺¹⁾
+    evaluate_velocity(time_, next_velocity_);
+    const long n = static_cast<long>(cloud_.size());
+    divergence_.resize(n);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i)
+      divergence_[i] = surface_divergence(neighbours_, stencils_, i, next_velocity_);
+    pde_->advance(*this, dt, divergence_);
+  }
+  ++steps_;
+  check_state();  // 6.
+}
+
+template <int D>
+void SurfaceSimulation<D>::check_state() const {
+  const int phi = pde_ ? pde_->unknown() : -1;
+  for (std::size_t i = 0; i < cloud_.size(); ++i) {
+    const bool bad_position = !cloud_.position[i].allFinite();
+    if (bad_position || (phi >= 0 && !std::isfinite(cloud_.field(phi)[i])))
+      throw NumericalError({time_, steps_, "surface", static_cast<long>(i)},
+                           bad_position ? "a point's position is not finite"
+                                        : "the solution is not finite at a point");
+  }
+}
+
+template <int D>
+void SurfaceSimulation<D>::run() {
+  while (!finished()) {
+    step();
+    for (auto* o : observers_) o->after_step(*this);
+  }
+}
+
+template <int D>
+void SurfaceSimulation<D>::remove_observer(SurfaceObserver<D>* o) {
+  observers_.erase(std::remove(observers_.begin(), observers_.end(), o), observers_.end());
+}
+
+template class SurfaceSimulation<2>;
+template class SurfaceSimulation<3>;
+
+}  // namespace pellicle

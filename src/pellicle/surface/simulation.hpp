@@ -1,0 +1,111 @@
+#pragma once
+//! A PDE on a moving curve or surface (Suchde & Kuhnert §3–4): the Lagrangian point cloud,
+//! its geometry (neighbours, frames, GFDM stencils, curvature), its velocity field and the
+//! PDE it carries. One step reads as the paper's algorithm:
+//!   1. velocity  v⁽ⁿ⁾ from the case's formulas at the current points (φⁿ, n, κ)
+//!   2. move      eq 3 (eq 2 at the first step)
+//!   3. geometry  neighbours, frames kept on their side (eq 5), stencils (eqs 17–27)
+//!   4. manage    fill holes, merge close points (§3.4–3.5); geometry again if changed
+//!   5. pde       one implicit step on the new cloud with ∇_M · v⁽ⁿ⁺¹⁾ (eq 29, eq 45)
+//!   6. observe   output, failure checks
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "pellicle/surface/gfdm.hpp"
+#include "pellicle/surface/management.hpp"
+#include "pellicle/surface/movement.hpp"
+#include "pellicle/surface/pde.hpp"
+#include "pellicle/surface/sparse_system.hpp"
+
+namespace pellicle {
+
+struct SurfaceSettings {
+  double dt = 0.0, end_time = 0.0;
+  MovementOrder movement = MovementOrder::second;
+  FrameOptions frames;
+  GfdmOptions gfdm;
+  //! Tilt the eq 4 normals by the fitted slope (gfdm.hpp, refine_normals) before the
+  //! stencils are built: second-order normals and curvature.
+  bool refine_normals = true;
+  bool manage = true;
+  ManagementOptions management;
+  LinearSolverOptions solver;
+  double rebuild_fraction = 0.25;  //!< neighbour tree kept until points move this × h
+  //! Smooth κ with eq 40 before formulas read it (the paper needs it for curvature flows).
+  bool smooth_curvature = true;
+};
+
+template <int D>
+class SurfaceSimulation;
+
+template <int D>
+class SurfaceObserver {
+ public:
+  virtual ~SurfaceObserver() = default;
+  virtual void after_step(const SurfaceSimulation<D>& s) = 0;
+};
+
+template <int D>
+class SurfaceSimulation {
+ public:
+  //! Sets up the geometry of the initial cloud (normals oriented along `reference` where
+  //! given, else outward) and the PDE's initial fields. `velocity` has D formulas.
+  SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings settings,
+                    std::array<PointFormula, D> velocity, std::unique_ptr<SurfacePde<D>> pde,
+                    const std::vector<Vec<D>>* reference = nullptr);
+
+  void step();
+  //! Steps until end_time, calling the observers after each.
+  void run();
+  bool finished() const { return time_ >= settings_.end_time - 1e-9 * settings_.dt; }
+
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  const SurfaceSettings& settings() const { return settings_; }
+  PointCloud<D>& cloud() { return cloud_; }
+  const PointCloud<D>& cloud() const { return cloud_; }
+  const NeighbourLists& neighbours() const { return neighbours_; }
+  const SurfaceStencils<D>& stencils() const { return stencils_; }
+  SurfacePde<D>* pde() const { return pde_.get(); }
+  //! κ per point (eq 37; smoothed by eq 40 when settings say so) and its cloud average.
+  const std::vector<double>& curvature() const { return curvature_; }
+  double mean_curvature_value() const { return kappa_mean_; }
+  //! What formulas read at point i, with φ from the PDE's unknown at time t.
+  PointValues values_at(std::size_t i, double t) const;
+  SparseSystem& system() { return system_; }
+  const ManagementReport& management_total() const { return management_total_; }
+  const LinearSolveReport& last_solve() const { return last_solve_; }
+  void record_solve(const LinearSolveReport& r) { last_solve_ = r; }
+
+  void add_observer(SurfaceObserver<D>* o) { observers_.push_back(o); }
+  void remove_observer(SurfaceObserver<D>* o);
+
+ private:
+  void update_geometry(bool keep_side);
+  void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
+  void check_state() const;
+
+  PointCloud<D> cloud_;
+  SurfaceSettings settings_;
+  std::array<PointFormula, D> velocity_;
+  std::unique_ptr<SurfacePde<D>> pde_;
+  NeighbourSearch<D> search_;
+  NeighbourLists neighbours_;
+  SurfaceStencils<D> stencils_;
+  SparseSystem system_;
+  std::vector<double> curvature_, divergence_;
+  std::vector<Vec<D>> next_velocity_;
+  double kappa_mean_ = 0.0;
+  double time_ = 0.0;
+  long steps_ = 0;
+  ManagementReport management_total_;
+  LinearSolveReport last_solve_;
+  std::vector<SurfaceObserver<D>*> observers_;
+};
+
+extern template class SurfaceSimulation<2>;
+extern template class SurfaceSimulation<3>;
+
+}  // namespace pellicle
