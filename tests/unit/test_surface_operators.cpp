@@ -248,6 +248,35 @@ TEST(SurfaceSpectrum, SphereEigenvalues) {
   std::printf("\nlargest imaginary part %.3g\n", r.largest_imaginary);
 }
 
+// The weight's width decides whether the discrete operator has spurious modes: with
+// W = exp(−2r²/h²) a cloud of 9 points per h² has negative eigenvalues of −Δ_M (growing
+// modes of implicit diffusion); with the default exp(−8r²/h²) even 20 points per h² give
+// exactly the sphere's spectrum (docs/theory/surface-gfdm.md has the whole table).
+SpectrumReport sphere_spectrum(double points_per_h2, double weight_exponent) {
+  auto c = test::jittered_sphere(1.0, 0.2, points_per_h2);
+  NeighbourSearch<3> search;
+  NeighbourLists nb;
+  SurfaceStencils<3> st;
+  search.find(c, nb);
+  estimate_frames(c, nb, FrameOptions{}, false);
+  orient_consistently(c, nb);
+  GfdmOptions g;
+  g.weight_exponent = weight_exponent;
+  build_stencils(c, nb, g, st);
+  refine_normals(c, nb, st);
+  build_stencils(c, nb, g, st);
+  return laplace_beltrami_spectrum<3>(nb, st, 10);
+}
+
+TEST(SurfaceSpectrum, BroadWeightsGiveSpuriousModesNarrowOnesDoNot) {
+  EXPECT_LT(sphere_spectrum(9.0, 2.0).eigenvalues.front(), -0.05);
+  const SpectrumReport clean = sphere_spectrum(20.0, 8.0);
+  EXPECT_NEAR(clean.eigenvalues[0], 0.0, 1e-8);
+  for (int k = 1; k <= 3; ++k) EXPECT_NEAR(clean.eigenvalues[k], 2.0, 0.01) << k;
+  for (int k = 4; k <= 8; ++k) EXPECT_NEAR(clean.eigenvalues[k], 6.0, 0.01) << k;
+  EXPECT_NEAR(clean.eigenvalues[9], 12.0, 0.1);
+}
+
 // A rigid rotation: eq 2 spirals outward as (1 + ω²Δt²)^(n/2), eq 3 stays on the circle.
 TEST(SurfaceMovement, SecondOrderKeepsRotatingPointsOnTheirCircle) {
   for (auto order : {MovementOrder::first, MovementOrder::second}) {
