@@ -44,6 +44,11 @@ const std::vector<Problem>& problems() {
        "thesis §6.1, deck A.4.10", &piston_container},
       {"friction-block", "Block sliding on an incline: Coulomb friction, μ = 0, 0.3, 0.7",
        "Bardenhagen, Brackbill & Sulsky 2000; analytic", &friction_block},
+      {"surface-cdr-sphere",
+       "Convection-diffusion-reaction on an expanding sphere: Tables 2 and 3",
+       "Suchde & Kuhnert §4.2.1", &surface_cdr_sphere},
+      {"surface-wave-sphere", "Wave equation on an expanding sphere: Table 4",
+       "Suchde & Kuhnert §4.2.4", &surface_wave_sphere},
   };
   return list;
 }
