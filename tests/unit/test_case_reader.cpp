@@ -378,6 +378,9 @@ TEST(CaseReader, ContactKeysAreChecked) {
   msg = problems_of(kValid, {"contact={model=\"single-field\", criterion=\"both\"}"});
   EXPECT_NE(msg.find("contact.criterion: unknown key"), std::string::npos) << msg;
   EXPECT_EQ(problems_of(kValid, {"contact={model=\"friction\", coefficient=inf}"}), "");
+  EXPECT_EQ(problems_of(kValid, {"contact={model=\"release\", hysteresis=false}"}), "");
+  msg = problems_of(kValid, {"contact={model=\"friction\", coefficient=0.3, hysteresis=true}"});
+  EXPECT_NE(msg.find("contact.hysteresis: unknown key"), std::string::npos) << msg;
 }
 
 }  // namespace

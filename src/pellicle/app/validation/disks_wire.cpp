@@ -2,13 +2,16 @@
 // Figure 21 is reconstructed in the case file).
 // disks-wire: with contact-release the disks pinch the wire (both feel a contact force in
 // the same steps), never cross it, and by t = 5 are both more than a cell away; with the single
-// field they stay on it. The paper's final motion — disk I to the left, disk II to the right — is
-// reported.
+// field they stay on it; at t = 5 disk I moves to the left and disk II to the right (the
+// paper's last frames; signs checked).
 // offset-disks: the disks, offset vertically and moving at the same speed, rotate clockwise
-// while they pinch the wire; the paper's counter-clockwise spin after release is reported.
+// while they pinch the wire (both feel it) and counter-clockwise after release (neither
+// feels it any more); the signs of the mean angular velocities are checked.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "pellicle/app/validation/problem.hpp"
 #include "pellicle/app/validation/support.hpp"
@@ -102,6 +105,11 @@ Outcome disks_wire(Resolution) {
       {"disk I to the wire at t = 5", distance_to_wire(*s, kDiskI), h, h, 1e9, ""});
   out.checks.push_back(
       {"disk II to the wire at t = 5", distance_to_wire(*s, kDiskII), h, h, 1e9, ""});
+  // The paper's last frames: disk I moves off to the left, disk II to the right.
+  out.checks.push_back({"disk I velocity at t = 5 (to the left)", body_velocity(*s, kDiskI).x(),
+                        0.0, -1e9, 0.0, ""});
+  out.checks.push_back({"disk II velocity at t = 5 (to the right)", body_velocity(*s, kDiskII).x(),
+                        0.0, 0.0, 1e9, ""});
   char row[256];
   std::snprintf(row, sizeof row, "| contact-release | %.3f | %.3f | %.3f | %.3f |\n",
                 body_velocity(*s, kDiskI).x(), body_velocity(*s, kDiskII).x(),
@@ -136,32 +144,48 @@ Outcome offset_disks(Resolution) {
                 "Offset disks: angular velocities (counter-clockwise > 0)",
                 {"time", "disk I", "disk II"},
                 {{0.0, 0.0, 0.0}}};
-  double pinching_I = 0.0, pinching_II = 0.0, after_I = 0.0, after_II = 0.0;
-  int pinching = 0, after = 0;
-  long step = 0;
+  // Pinching: steps in which both disks feel a contact force from the wire; after release:
+  // the steps after the last one in which either disk feels it.
+  std::vector<std::array<double, 3>> spin;  // time, disk I, disk II
+  std::vector<bool> pinched, touched;
   while (!s->finished()) {
     s->step();
-    if (++step % 10 != 0) continue;
-    const double wI = angular_velocity(*s, kDiskI), wII = angular_velocity(*s, kDiskII);
-    series.rows.push_back({s->time(), wI, wII});
-    const bool touching =
-        std::max(distance_to_wire(*s, kDiskI), distance_to_wire(*s, kDiskII)) < s->grid().cell();
-    if (touching) {
-      pinching_I += wI, pinching_II += wII, ++pinching;
-    } else if (pinching > 0) {
-      after_I += wI, after_II += wII, ++after;
-    }
+    const auto& force = *s->contact_forces();
+    pinched.push_back(force[kDiskI].norm() > 0.0 && force[kDiskII].norm() > 0.0);
+    touched.push_back(force[kDiskI].norm() > 0.0 || force[kDiskII].norm() > 0.0);
+    spin.push_back({s->time(), angular_velocity(*s, kDiskI), angular_velocity(*s, kDiskII)});
+    if (spin.size() % 10 == 0)
+      series.rows.push_back({spin.back()[0], spin.back()[1], spin.back()[2]});
   }
+  std::size_t last_touch = 0;
+  for (std::size_t i = 0; i < touched.size(); ++i)
+    if (touched[i]) last_touch = i;
+  double pinching_I = 0.0, pinching_II = 0.0, after_I = 0.0, after_II = 0.0;
+  int pinching = 0, after = 0;
+  for (std::size_t i = 0; i < spin.size(); ++i) {
+    if (pinched[i]) pinching_I += spin[i][1], pinching_II += spin[i][2], ++pinching;
+    if (i > last_touch) after_I += spin[i][1], after_II += spin[i][2], ++after;
+  }
+  out.checks.push_back({"steps pinching (both disks feel the wire)", static_cast<double>(pinching),
+                        1.0, 1.0, 1e9, ""});
+  out.checks.push_back({"steps after release (neither disk feels the wire)",
+                        static_cast<double>(after), 1.0, 1.0, 1e9, ""});
   out.checks.push_back({"disk I, mean angular velocity while pinching (clockwise < 0)",
                         pinching_I / std::max(pinching, 1), 0.0, -1e9, 0.0, "rad/s"});
   out.checks.push_back({"disk II, mean angular velocity while pinching (clockwise < 0)",
                         pinching_II / std::max(pinching, 1), 0.0, -1e9, 0.0, "rad/s"});
+  out.checks.push_back({"disk I, mean angular velocity after release (counter-clockwise > 0)",
+                        after_I / std::max(after, 1), 0.0, 0.0, 1e9, "rad/s"});
+  out.checks.push_back({"disk II, mean angular velocity after release (counter-clockwise > 0)",
+                        after_II / std::max(after, 1), 0.0, 0.0, 1e9, "rad/s"});
   char row[320];
   std::snprintf(row, sizeof row,
-                "| after release (paper: counter-clockwise, > 0) | %.4f | %.4f |\n\n"
+                "| while pinching (paper: clockwise, < 0) | %.4f | %.4f |\n"
+                "| after release, from t = %.2f (paper: counter-clockwise, > 0) | %.4f | %.4f |\n\n"
                 "Energy at t = 5 / start: %.3f.\n",
-                after_I / std::max(after, 1), after_II / std::max(after, 1),
-                s->state().total() / e0);
+                pinching_I / std::max(pinching, 1), pinching_II / std::max(pinching, 1),
+                spin[std::min(last_touch + 1, spin.size() - 1)][0], after_I / std::max(after, 1),
+                after_II / std::max(after, 1), s->state().total() / e0);
   out.table = "| mean angular velocity | disk I | disk II |\n|---|---|---|\n" + std::string(row);
   out.series.push_back(std::move(series));
   return out;

@@ -7,7 +7,10 @@
 //   body-body (9.7)            release if (v^m − v^J) · n^m < 0 for the other bodies J
 //   body-centre-of-mass (9.8)  release if (v^m − v^cm) · n^m < 0
 //   both (9.9, IJNME eq 26)    release if (v^I − v^cm) · n^I < 0 for every body I there
-// m is the master body where it shares the node, else the first body there.
+// m is the master body where it shares the node, else the first body there. With
+// criterion 9.9 a node keeps its state (contact or release) from the step before unless
+// every body's test agrees on the change (thesis A.1.3); `hysteresis = false` re-decides
+// every step from the tests alone.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -22,28 +25,58 @@ enum class ReleaseCriterion { body_body, body_centre_of_mass, both };
 template <int D>
 class Release final : public ContactModel<D> {
  public:
-  Release(ReleaseCriterion criterion, int master, std::string master_name)
-      : criterion_(criterion), master_(master), master_name_(std::move(master_name)) {}
+  Release(ReleaseCriterion criterion, int master, std::string master_name, bool hysteresis)
+      : criterion_(criterion),
+        master_(master),
+        master_name_(std::move(master_name)),
+        hysteresis_(hysteresis) {}
 
   std::string describe() const override {
     const char* names[] = {"body-body (eq 9.7)", "body-centre-of-mass (eq 9.8)", "both (eq 9.9)"};
     return std::string("release, criterion ") + names[static_cast<int>(criterion_)] + ", master '" +
-           master_name_ + "'";
+           master_name_ + "'" + (hysteresis_ ? ", state kept unless all bodies agree" : "");
   }
 
   void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
                double dt, ContactPass pass) const override {
     // The decision is taken once per step, on the Lagrangian pass, and kept for the
     // convected velocities, so bodies that moved together also deform together.
-    if (pass == ContactPass::lagrangian) released_.assign(centre_of_mass.node_count(), 0);
+    if (pass == ContactPass::lagrangian) {
+      previous_.swap(released_);
+      previous_.resize(centre_of_mass.node_count(), kNotShared);
+      released_.assign(centre_of_mass.node_count(), kNotShared);
+    }
     fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this, pass](SharedNode<D>& node) {
-      if (pass == ContactPass::lagrangian) released_[node.index] = releases(node);
-      if (!released_[node.index])
+      if (pass == ContactPass::lagrangian) released_[node.index] = decide(node);
+      if (released_[node.index] != kReleased)
         for (int k = 0; k < node.count; ++k) node.in_contact[k] = true;
     });
   }
 
  private:
+  static constexpr char kNotShared = 0, kContact = 1, kReleased = 2;
+
+  char decide(const SharedNode<D>& node) const {
+    if (!hysteresis_ || criterion_ != ReleaseCriterion::both)
+      return releases(node) ? kReleased : kContact;
+    // Thesis A.1.3 on eq 9.9: "Release is allowed only if both criteria agree, and
+    // subsequent changes to contact, release, etc. are allowed only then": a node changes
+    // state only when every body's test agrees; otherwise it keeps last step's state
+    // (contact where it was not shared before).
+    bool all_release = true, all_contact = true;
+    for (int k = 0; k < node.count; ++k) {
+      if (node.normal[k].isZero()) return kContact;
+      const bool separating =
+          (node.mapped[k] - node.centre_of_mass_mapped).dot(node.normal[k]) < 0.0;
+      all_release = all_release && separating;
+      all_contact = all_contact && !separating;
+    }
+    if (all_release) return kReleased;
+    if (all_contact) return kContact;
+    const char before = previous_[node.index];
+    return before == kNotShared ? kContact : before;
+  }
+
   bool releases(const SharedNode<D>& node) const {
     int m = 0;
     for (int k = 0; k < node.count; ++k)
@@ -70,7 +103,9 @@ class Release final : public ContactModel<D> {
   ReleaseCriterion criterion_;
   int master_;
   std::string master_name_;
-  mutable std::vector<char> released_;  //!< per node, this step's decision
+  bool hysteresis_;
+  mutable std::vector<char> released_;  //!< per node, this step's state
+  mutable std::vector<char> previous_;  //!< per node, last step's state
 };
 
 }  // namespace
@@ -93,7 +128,9 @@ std::unique_ptr<ContactModel<D>> make_release(ParameterReader& in,
                              : criterion == "body-centre-of-mass"
                                  ? ReleaseCriterion::body_centre_of_mass
                                  : ReleaseCriterion::both;
-  return std::make_unique<Release<D>>(c, master, body_names.empty() ? "" : body_names[master]);
+  const bool hysteresis = in.flag_or("hysteresis", c == ReleaseCriterion::both);
+  return std::make_unique<Release<D>>(c, master, body_names.empty() ? "" : body_names[master],
+                                      hysteresis);
 }
 
 template std::unique_ptr<ContactModel<2>> make_release<2>(ParameterReader&,
