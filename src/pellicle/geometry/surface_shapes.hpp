@@ -34,4 +34,7 @@ template <int D>
 SurfaceShapePtr<D> make_implicit_blobs(std::vector<Vec<D>> centers, std::vector<double> radii,
                                        double level);
 
+//! A triangulated surface (at least one triangle); `name` is used by describe().
+SurfaceShapePtr<3> make_mesh_shape(SurfaceMesh mesh, std::string name);
+
 }  // namespace pellicle
