@@ -56,7 +56,9 @@ void read_velocity(TomlParameters& s, SurfaceCase<D>& c) {
 template <int D>
 void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) {
   auto s = root.sub_table("surface", true);
-  if (auto shape = s->sub_table("shape", true)) c.shape = make_surface_shape<D>(*shape);
+  const std::string base = std::filesystem::path(c.file).parent_path().string();
+  if (auto shape = s->sub_table("shape", true))
+    c.shape = make_surface_shape<D>(*shape, base.empty() ? "." : base);
   c.smoothing_length = s->number("smoothing_length", NumberRange::positive());
   auto& m = c.settings.management;
   auto t = s->sub_table("management", false);

@@ -1,0 +1,40 @@
+#pragma once
+//! The shapes make_surface_shape reads, for code that builds them directly. Each lives in
+//! its own file (sphere_shape.cpp, ellipsoid_shape.cpp, …) and is registered by name in
+//! surface_shape_factory.cpp.
+
+#include <string>
+#include <vector>
+
+#include "pellicle/geometry/surface_mesh.hpp"
+#include "pellicle/geometry/surface_shape.hpp"
+
+namespace pellicle {
+
+//! Sphere (D = 3) or circle (D = 2) of radius r about c, cut to the part where
+//! n·(x − c) ≥ 0 for every n in `keep` (none: the whole shape). The cut curves (D = 3: great
+//! circles; D = 2: points) are the part's boundary. Error measure: eq 13, |‖x − c‖² − r²|/r².
+template <int D>
+SurfaceShapePtr<D> make_cut_sphere(const Vec<D>& center, double radius, std::vector<Vec<D>> keep);
+
+//! Ellipsoid (D = 3) or ellipse (D = 2) Σ ((x − c)_d / a_d)² = 1; exact closest points.
+template <int D>
+SurfaceShapePtr<D> make_ellipsoid_shape(const Vec<D>& center, const Vec<D>& semi_axes);
+
+//! Torus about the z axis through `center`: (c − √(x² + y²))² + z² = a² (eq 14), c the
+//! major and a the minor radius; error measure eq 15.
+SurfaceShapePtr<3> make_torus_shape(const Vec3& center, double major, double minor);
+
+//! The half pipe of §4.2.2: a tube of radius `pipe_radius` about the arc x = R cos θ,
+//! z = R sin θ (R = `arc_radius`, |θ| ≤ `arc_angle`/2, radians), only its y ≥ 0 half.
+SurfaceShapePtr<3> make_half_pipe_shape(double pipe_radius, double arc_radius, double arc_angle);
+
+//! The level set Σ_k exp(−|x − c_k|²/r_k²) = level, 0 < level < 1 (each centre inside).
+template <int D>
+SurfaceShapePtr<D> make_implicit_blobs(std::vector<Vec<D>> centers, std::vector<double> radii,
+                                       double level);
+
+//! A triangulated surface (at least one triangle); `name` is used by describe().
+SurfaceShapePtr<3> make_mesh_shape(SurfaceMesh mesh, std::string name);
+
+}  // namespace pellicle
