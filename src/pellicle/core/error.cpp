@@ -42,6 +42,6 @@ InputError::InputError(SourceLocation where, std::string key, std::string messag
           std::vector<InputProblem>{{std::move(where), std::move(key), std::move(message)}}) {}
 
 NumericalError::NumericalError(Context context, const std::string& what)
-    : std::runtime_error(describe(context, what)), context_(std::move(context)) {}
+    : std::runtime_error(describe(context, what)), context_(std::move(context)), reason_(what) {}
 
 }  // namespace pellicle

@@ -53,9 +53,12 @@ class NumericalError : public std::runtime_error {
   };
   NumericalError(Context context, const std::string& what);
   const Context& context() const { return context_; }
+  //! The failure without its time, step, body and point (to restate it with another context).
+  const std::string& reason() const { return reason_; }
 
  private:
   Context context_;
+  std::string reason_;
 };
 
 }  // namespace pellicle

@@ -105,6 +105,9 @@ void read_solver(TomlParameters& root, SurfaceCase<D>& c) {
       s->number_or("tolerance", 1e-10, NumberRange::open_closed(0.0, 1.0));
   c.settings.solver.max_iterations =
       static_cast<int>(s->integer_or("max_iterations", 500, 1, 1000000));
+  c.settings.solver.preconditioner =
+      s->choice("preconditioner", {"ilu", "jacobi"}, "ilu") == "jacobi" ? Preconditioner::jacobi
+                                                                          : Preconditioner::ilu;
   if (c.settings.dt > c.settings.end_time)
     s->fail("dt", "expected a time step no longer than end_time");
 }

@@ -84,6 +84,15 @@ void SurfaceSimulation<D>::evaluate_velocity(double t, std::vector<Vec<D>>& v) c
 
 template <int D>
 void SurfaceSimulation<D>::step() {
+  try {
+    advance_one_step();
+  } catch (const NumericalError& e) {  // the stages know the point, not the time
+    throw NumericalError({time_, steps_, "surface", e.context().point}, e.reason());
+  }
+}
+
+template <int D>
+void SurfaceSimulation<D>::advance_one_step() {
   const double dt = settings_.dt;
   if (pde_) pde_->before_move(*this);
   evaluate_velocity(time_, cloud_.velocity);    // 1. v⁽ⁿ⁾

@@ -83,6 +83,7 @@ class SurfaceSimulation {
   void remove_observer(SurfaceObserver<D>* o);
 
  private:
+  void advance_one_step();
   void update_geometry(bool keep_side);
   void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
   void check_state() const;

@@ -12,10 +12,42 @@ struct SparseSystem::Solver {
   using Matrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
   Matrix matrix;
   std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::BiCGSTAB<Matrix, Eigen::IncompleteLUT<double>> bicgstab;
+  Eigen::BiCGSTAB<Matrix, Eigen::IncompleteLUT<double>> with_ilu;
+  Eigen::BiCGSTAB<Matrix, Eigen::DiagonalPreconditioner<double>> with_diagonal;
 };
 
-SparseSystem::SparseSystem() : solver_(std::make_unique<Solver>()) {}
+namespace {
+template <class Solver>
+LinearSolveReport run(Solver& solver, const SparseSystem::Solver::Matrix& a,
+                      const std::vector<double>& rhs, std::vector<double>& x,
+                      const LinearSolverOptions& options) {
+  solver.setTolerance(options.tolerance);
+  solver.setMaxIterations(options.max_iterations);
+  solver.compute(a);
+  if (solver.info() != Eigen::Success)
+    throw NumericalError({}, "the preconditioner of the implicit step's matrix could not be "
+                             "built (a zero pivot: an isolated point or a singular stencil)");
+  const long n = a.rows();
+  const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), n);
+  Eigen::Map<Eigen::VectorXd> solution(x.data(), n);
+  solution = solver.solveWithGuess(b, Eigen::VectorXd(solution));
+  LinearSolveReport report{static_cast<int>(solver.iterations()), solver.error()};
+  if (solver.info() != Eigen::Success || !std::isfinite(report.residual)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "BiCGSTAB did not converge: relative residual %.3g after %d iterations "
+                  "(tolerance %.3g); lower the time step or raise solver.max_iterations",
+                  report.residual, report.iterations, options.tolerance);
+    throw NumericalError({}, text);
+  }
+  return report;
+}
+}  // namespace
+
+SparseSystem::SparseSystem() : solver_(std::make_unique<Solver>()) {
+  solver_->with_ilu.preconditioner().setFillfactor(2);
+  solver_->with_ilu.preconditioner().setDroptol(1e-3);
+}
 SparseSystem::~SparseSystem() = default;
 
 LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::vector<double>& rhs,
@@ -29,26 +61,9 @@ LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::ve
       if (values[k] != 0.0) s.triplets.emplace_back(i, lists.index[k], values[k]);
   s.matrix.resize(n, n);
   s.matrix.setFromTriplets(s.triplets.begin(), s.triplets.end());
-  s.bicgstab.setTolerance(options.tolerance);
-  s.bicgstab.setMaxIterations(options.max_iterations);
-  s.bicgstab.compute(s.matrix);
-  if (s.bicgstab.info() != Eigen::Success)
-    throw NumericalError({},
-                         "the incomplete-LU factorisation of the implicit step's matrix "
-                         "failed (a zero pivot: an isolated point or a singular stencil)");
-  const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), n);
-  Eigen::Map<Eigen::VectorXd> solution(x.data(), n);
-  solution = s.bicgstab.solveWithGuess(b, Eigen::VectorXd(solution));
-  LinearSolveReport report{static_cast<int>(s.bicgstab.iterations()), s.bicgstab.error()};
-  if (s.bicgstab.info() != Eigen::Success || !std::isfinite(report.residual)) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "BiCGSTAB did not converge: relative residual %.3g after %d iterations "
-                  "(tolerance %.3g); lower the time step or raise solver.max_iterations",
-                  report.residual, report.iterations, options.tolerance);
-    throw NumericalError({}, text);
-  }
-  return report;
+  if (options.preconditioner == Preconditioner::jacobi)
+    return run(s.with_diagonal, s.matrix, rhs, x, options);
+  return run(s.with_ilu, s.matrix, rhs, x, options);
 }
 
 }  // namespace pellicle
