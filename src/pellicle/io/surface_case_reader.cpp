@@ -107,7 +107,7 @@ void read_solver(TomlParameters& root, SurfaceCase<D>& c) {
       static_cast<int>(s->integer_or("max_iterations", 500, 1, 1000000));
   c.settings.solver.preconditioner =
       s->choice("preconditioner", {"ilu", "jacobi"}, "ilu") == "jacobi" ? Preconditioner::jacobi
-                                                                          : Preconditioner::ilu;
+                                                                        : Preconditioner::ilu;
   if (c.settings.dt > c.settings.end_time)
     s->fail("dt", "expected a time step no longer than end_time");
 }

@@ -25,8 +25,9 @@ LinearSolveReport run(Solver& solver, const SparseSystem::Solver::Matrix& a,
   solver.setMaxIterations(options.max_iterations);
   solver.compute(a);
   if (solver.info() != Eigen::Success)
-    throw NumericalError({}, "the preconditioner of the implicit step's matrix could not be "
-                             "built (a zero pivot: an isolated point or a singular stencil)");
+    throw NumericalError({},
+                         "the preconditioner of the implicit step's matrix could not be "
+                         "built (a zero pivot: an isolated point or a singular stencil)");
   const long n = a.rows();
   const Eigen::Map<const Eigen::VectorXd> b(rhs.data(), n);
   Eigen::Map<Eigen::VectorXd> solution(x.data(), n);

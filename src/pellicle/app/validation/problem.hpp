@@ -69,5 +69,6 @@ Outcome offset_disks(Resolution resolution);
 Outcome ball_and_net(Resolution resolution);
 Outcome surface_cdr_sphere(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
+Outcome laplace_spectrum(Resolution resolution);
 
 }  // namespace pellicle::validation
