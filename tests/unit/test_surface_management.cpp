@@ -490,7 +490,7 @@ TEST(SurfaceManagement, CurvatureCorrectedAdditionOnTheSphere) {
 //   0.80    605 ->  2656   5.10e-2           4.90e-2           7.51e-4
 //   0.40   2518 -> 10486   1.20e-2 (2.09)    1.13e-2 (2.11)    6.11e-5 (3.62)
 //   0.20  10074 -> 42239   3.01e-3 (1.99)    2.82e-3 (2.00)    6.37e-6 (3.26)
-// (h0 = 0.1, outside ctest for time: 40319 -> 168343, 7.48e-4, 7.01e-4, 7.51e-7.)
+// (h0 = 0.1, left out of ctest for time: 40319 -> 168344, 7.48e-4, 7.01e-4, 7.51e-7.)
 TEST(SurfaceManagement, CurvatureCorrectedAdditionOnTheTorus) {
   const double c = 3.0, a = 1.0;
   const std::vector<double> h0s = {0.8, 0.4, 0.2};

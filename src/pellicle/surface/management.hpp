@@ -51,10 +51,12 @@ struct ManagementReport {
 //! so both criteria hold afterwards). `cloud.frame` must hold consistently oriented frames of
 //! the current positions, and boundary points their ν (normals for eqs 6–9, the tangent
 //! planes of the one-rings and the fits). New and merged points get their position,
-//! smoothing length, frame (normal from eq 6, sides kept), velocity, previous velocity and
-//! every field; new points are appended, so the last `added` points are the new ones. The
-//! Gaussian weight of the fits is that of the frames (`frames.weight_exponent`). Afterwards
-//! the caller rebuilds neighbours, frames and stencils if the report says the cloud changed.
+//! smoothing length, frame (the n_approx of their rule, on the side of the points it comes
+//! from), velocity, previous velocity and every field; new points are appended, so the last
+//! `added` points are the new ones. The Gaussian weight of the fits is that of the frames
+//! (`frames.weight_exponent`). Afterwards the caller rebuilds neighbours, frames and
+//! stencils if the report says the cloud changed. Throws std::invalid_argument unless
+//! 0 < r_min < r_max, and NumericalError when a place to fill has no point within 2 h.
 template <int D>
 ManagementReport manage_points(PointCloud<D>& cloud, NeighbourSearch<D>& search,
                                const ManagementOptions& options, const FrameOptions& frames);
