@@ -11,25 +11,52 @@
 
 namespace pellicle {
 
+//! How the curvature correction places a new point and what normal it gets
+//! (docs/theory/surface-management.md, where the two are compared).
+enum class CurvatureRule {
+  //! The paper's eqs 6–9: n_approx the mean of the normals, x_new where
+  //! Σ_j (x_j − x_new)·n_j = 0. On a sphere this lands as far outside as the circumcentre
+  //! lies inside.
+  tangent_planes,
+  //! With the barycentric coordinates λ_j of the circumcentre: n_approx = Σ_j λ_j n_j and
+  //! x_new halfway from x_c to where Σ_j λ_j (x_j − x_new)·n_j = 0, which is exact to
+  //! leading order on every quadratic surface.
+  midway,
+};
+
 struct ManagementOptions {
   double r_max = 0.45;               //!< no hole of circumradius r_max h (§2, §3.4)
   double r_min = 0.2;                //!< no two points closer than r_min h (§2, §3.5)
   bool curvature_correction = true;  //!< move new points along n_approx (eqs 6–9)
-  int max_fill_passes = 8;           //!< the filling is repeated for the new points (§3.4)
+  CurvatureRule curvature_rule = CurvatureRule::tangent_planes;  //!< with curvature_correction
+  //! The one-rings triangulate the points within one_ring_radius h. A hole is seen only
+  //! from points that see across it: with 1 (the paper's neighbourhood) a cloud whose h is
+  //! halved has gaps wider than h that stay unfilled; 2 reaches across them.
+  double one_ring_radius = 2.0;
+  int max_fill_passes = 8;   //!< the filling is repeated for the new points (§3.4)
+  int max_merge_rounds = 8;  //!< merging is repeated while merged points are too close
 };
 
 struct ManagementReport {
-  long added = 0;    //!< points created in holes
-  long merged = 0;   //!< pairs merged into one point
-  long removed = 0;  //!< interior points dropped next to boundary points
+  long added = 0;         //!< points created in holes (appended after the other points)
+  long merged = 0;        //!< pairs merged into one point
+  long removed = 0;       //!< interior points dropped next to boundary points
+  int fill_passes = 0;    //!< passes of the hole filling that added points
+  bool filled = true;     //!< false when max_fill_passes ended the filling with holes left
+  long widened_fits = 0;  //!< new or merged points whose fit needed more than h (MlsFit)
   bool changed() const { return added + merged + removed > 0; }
 };
 
-//! Fill holes, then merge close points. `cloud.frame` must hold the frames of the current
-//! positions (normals for eqs 6–9 and the tangent planes of the fits). New and merged points
-//! get their position, smoothing length, frame (normal from eq 6, sides kept), velocity,
-//! previous velocity and every field. Afterwards the caller rebuilds neighbours, frames and
-//! stencils if the report says the cloud changed.
+//! Merge close points, then fill holes (the filling never puts points closer than r_min h,
+//! so both criteria hold afterwards). `cloud.frame` must hold consistently oriented frames of
+//! the current positions, and boundary points their ν (normals for eqs 6–9, the tangent
+//! planes of the one-rings and the fits). New and merged points get their position,
+//! smoothing length, frame (the n_approx of their rule, on the side of the points it comes
+//! from), velocity, previous velocity and every field; new points are appended, so the last
+//! `added` points are the new ones. The Gaussian weight of the fits is that of the frames
+//! (`frames.weight_exponent`). Afterwards the caller rebuilds neighbours, frames and
+//! stencils if the report says the cloud changed. Throws std::invalid_argument unless
+//! 0 < r_min < r_max, and NumericalError when a place to fill has no point within 2 h.
 template <int D>
 ManagementReport manage_points(PointCloud<D>& cloud, NeighbourSearch<D>& search,
                                const ManagementOptions& options, const FrameOptions& frames);

@@ -70,5 +70,6 @@ Outcome ball_and_net(Resolution resolution);
 Outcome surface_cdr_sphere(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);
+Outcome surface_movement(Resolution resolution);
 
 }  // namespace pellicle::validation
