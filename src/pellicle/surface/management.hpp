@@ -28,7 +28,10 @@ struct ManagementOptions {
   double r_max = 0.45;               //!< no hole of circumradius r_max h (§2, §3.4)
   double r_min = 0.2;                //!< no two points closer than r_min h (§2, §3.5)
   bool curvature_correction = true;  //!< move new points along n_approx (eqs 6–9)
-  CurvatureRule curvature_rule = CurvatureRule::tangent_planes;  //!< with curvature_correction
+  //! With curvature_correction. Midway by default: the paper's rule, as its eqs 8–9 read,
+  //! leaves the new points as far off the surface as no correction does (measured on
+  //! spheres and tori: 0.97 of the uncorrected error, order 2; midway: 1e-3 of it, order 4).
+  CurvatureRule curvature_rule = CurvatureRule::midway;
   //! The one-rings triangulate the points within one_ring_radius h. A hole is seen only
   //! from points that see across it: with 1 (the paper's neighbourhood) a cloud whose h is
   //! halved has gaps wider than h that stay unfilled; 2 reaches across them.
