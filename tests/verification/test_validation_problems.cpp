@@ -20,6 +20,11 @@
 //   ball-and-net     thesis §5.9, A.1.6: cell-width net: release near t = 2.8 at −0.7 (15%),
 //                    over twice as fast as the single field, the net clear of the wall
 //   friction-block   Coulomb friction: block on an incline within 3% of g(sin θ − μ cos θ)
+//   surface-movement Suchde & Kuhnert §3.7.1–2: first- vs second-order movement of a rotating
+//                    quarter sphere; the deforming hemisphere with management converging in Δt
+//   surface-cdr-sphere §4.2.1: Tables 2 and 3 (errors within 1.5×, orders within 0.2)
+//   surface-wave-sphere §4.2.4: Table 4 (same tolerances)
+//   laplace-spectrum  −Δ_M eigenvalues on the sphere (l(l+1)) and a torus within 1%
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -95,6 +100,18 @@ TEST(Validation, NormalsAccuracy) {
   expect_all_checks_pass("normals-accuracy");
 }
 
+TEST(Validation, SurfaceMovement) {
+  expect_all_checks_pass("surface-movement");
+}
+TEST(Validation, SurfaceCdrSphere) {
+  expect_all_checks_pass("surface-cdr-sphere");
+}
+TEST(Validation, SurfaceWaveSphere) {
+  expect_all_checks_pass("surface-wave-sphere");
+}
+TEST(Validation, LaplaceSpectrum) {
+  expect_all_checks_pass("laplace-spectrum");
+}
 TEST(Validation, EveryProblemHasAName) {
   for (const auto& p : problems()) {
     EXPECT_EQ(find_problem(p.name), &p);

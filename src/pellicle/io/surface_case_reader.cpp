@@ -70,6 +70,8 @@ void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) 
                              "tangent-planes"
                          ? CurvatureRule::tangent_planes
                          : CurvatureRule::midway;
+  c.settings.management_interval =
+      t->number_or("interval", c.settings.management_interval, NumberRange::closed(0.0, 1.0));
   if (m.r_min >= m.r_max) t->fail("r_min", "expected r_min below r_max");
   const double factor = s->number_or("spacing_factor", kPaperSpacingFactor,
                                      NumberRange::closed(m.r_min, 2.0 * m.r_max));

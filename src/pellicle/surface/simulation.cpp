@@ -98,10 +98,12 @@ void SurfaceSimulation<D>::advance_one_step() {
   evaluate_velocity(time_, cloud_.velocity);    // 1. v⁽ⁿ⁾
   move_points(cloud_, dt, settings_.movement);  // 2. eq 3 (eq 2 first)
   time_ += dt;
-  update_geometry(true);   // 3. frames keep their side (eq 5)
-  if (settings_.manage) {  // 4. §3.4–3.5
+  update_geometry(true);                       // 3. frames keep their side (eq 5)
+  if (settings_.manage && management_due()) {  // 4. §3.4–3.5
     const ManagementReport r =
         manage_points(cloud_, search_, settings_.management, settings_.frames);
+    managed_at_ = cloud_.position;
+    managed_generation_ = cloud_.generation();
     management_total_.added += r.added;
     management_total_.merged += r.merged;
     management_total_.removed += r.removed;
@@ -118,6 +120,17 @@ void SurfaceSimulation<D>::advance_one_step() {
   }
   ++steps_;
   check_state();  // 6.
+}
+
+template <int D>
+bool SurfaceSimulation<D>::management_due() const {
+  if (managed_generation_ != cloud_.generation() || managed_at_.size() != cloud_.size())
+    return true;
+  for (std::size_t i = 0; i < cloud_.size(); ++i)
+    if ((cloud_.position[i] - managed_at_[i]).norm() >
+        settings_.management_interval * cloud_.smoothing_length[i])
+      return true;
+  return false;
 }
 
 template <int D>

@@ -31,6 +31,10 @@ struct SurfaceSettings {
   bool refine_normals = true;
   bool manage = true;
   ManagementOptions management;
+  //! Management runs once some point has moved this × its h since management last ran
+  //! (0: every step). The cloud distorts no faster than its points move, and the one-ring
+  //! search of the management is the dearest stage of a step.
+  double management_interval = 0.1;
   LinearSolverOptions solver;
   double rebuild_fraction = 0.25;  //!< neighbour tree kept until points move this × h
   //! Smooth κ with eq 40 before formulas read it (the paper needs it for curvature flows).
@@ -87,6 +91,7 @@ class SurfaceSimulation {
   void update_geometry(bool keep_side);
   void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
   void check_state() const;
+  bool management_due() const;
 
   PointCloud<D> cloud_;
   SurfaceSettings settings_;
@@ -98,6 +103,8 @@ class SurfaceSimulation {
   SparseSystem system_;
   std::vector<double> curvature_, divergence_;
   std::vector<Vec<D>> next_velocity_;
+  std::vector<Vec<D>> managed_at_;  //!< positions when management last ran
+  long managed_generation_ = -1;
   double kappa_mean_ = 0.0;
   double time_ = 0.0;
   long steps_ = 0;
