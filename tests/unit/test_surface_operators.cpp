@@ -3,15 +3,18 @@
 // the plane and converging on the sphere, curvature (eq 37), movement (eqs 2–3).
 #include <gtest/gtest.h>
 
+#include <omp.h>
 #include <Eigen/LU>
 #include <cmath>
 #include <cstdio>
 #include <random>
 
+#include "pellicle/core/error.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/movement.hpp"
 #include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/quadrature.hpp"
 #include "pellicle/surface/sparse_system.hpp"
 #include "pellicle/surface/spectrum.hpp"
 #include "support/test_clouds.hpp"
@@ -275,6 +278,53 @@ TEST(SurfaceSpectrum, BroadWeightsGiveSpuriousModesNarrowOnesDoNot) {
   for (int k = 1; k <= 3; ++k) EXPECT_NEAR(clean.eigenvalues[k], 2.0, 0.01) << k;
   for (int k = 4; k <= 8; ++k) EXPECT_NEAR(clean.eigenvalues[k], 6.0, 0.01) << k;
   EXPECT_NEAR(clean.eigenvalues[9], 12.0, 0.1);
+}
+
+// One-ring areas integrate over the sphere: Σ A = 4π r², Σ A x² = 4π r⁴/3.
+TEST(SurfaceQuadrature, SphereAreaAndSecondMoment) {
+  for (double h : {0.2, 0.1}) {
+    auto c = test::jittered_sphere(1.0, h);
+    NeighbourLists nb;
+    SurfaceStencils<3> st;
+    prepare(c, nb, st, true);
+    std::vector<double> area;
+    point_areas(c, nb, area);
+    double total = 0.0, moment = 0.0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      total += area[i];
+      moment += area[i] * c.position[i].x() * c.position[i].x();
+    }
+    // Measured: −4.8e-4 and 1.7e-4 (area), −1.1e-3 and 3.2e-4 (moment) at h = 0.2, 0.1.
+    EXPECT_NEAR(total / (4 * M_PI), 1.0, 3e-3) << h;
+    EXPECT_NEAR(moment / (4 * M_PI / 3), 1.0, 3e-3) << h;
+    std::printf("h %.1f: area / 4π − 1 = %.2e, second moment %.2e\n", h, total / (4 * M_PI) - 1,
+                moment / (4 * M_PI / 3) - 1);
+  }
+}
+
+// A point with too few neighbours stops the stencils and the frames with a NumericalError
+// naming it, also when the loop that finds it runs on several threads.
+TEST(SurfaceGfdm, IsolatedPointIsReportedFromAParallelLoop) {
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  auto c = test::jittered_sphere(1.0, 0.2);
+  c.add_point(Vec3(0.0, 0.0, 5.0), 0.2, false);  // far off the sphere: no neighbours
+  NeighbourSearch<3> search;
+  NeighbourLists nb;
+  search.find(c, nb);
+  try {
+    estimate_frames(c, nb, FrameOptions{}, false);
+    FAIL() << "frames of an isolated point";
+  } catch (const NumericalError& e) {
+    EXPECT_EQ(e.context().point, static_cast<long>(c.size() - 1));
+    EXPECT_NE(std::string(e.what()).find("0 neighbours"), std::string::npos) << e.what();
+  }
+  c.position.back() = Vec3(0.0, 0.0, 1.0);  // on the pole, but its neighbours all dropped
+  c.smoothing_length.back() = 1e-3;
+  search.find(c, nb);
+  SurfaceStencils<3> st;
+  EXPECT_THROW(build_stencils(c, nb, GfdmOptions{}, st), NumericalError);
+  omp_set_num_threads(threads);
 }
 
 // A rigid rotation: eq 2 spirals outward as (1 + ω²Δt²)^(n/2), eq 3 stays on the circle.

@@ -101,6 +101,10 @@ class ExpressionParser {
       depth += effect(in.op);
       out_.max_stack_ = std::max(out_.max_stack_, depth);
     }
+    if (out_.max_stack_ > Expression::kMaxDepth)
+      throw ExpressionError(1, "formula nested too deeply (more than " +
+                                   std::to_string(Expression::kMaxDepth) +
+                                   " pending values): \"" + text_ + "\"");
   }
 
  private:
@@ -275,9 +279,8 @@ bool Expression::uses(int variable) const {
 }
 
 double Expression::evaluate(const double* values) const {
-  double stack[64];
+  double stack[kMaxDepth];
   double* top = stack;  // one past the last value
-  if (max_stack_ > 64) throw std::length_error("formula nested too deeply: " + text_);
   for (const auto& in : code_) {
     switch (in.op) {
       case Op::constant:

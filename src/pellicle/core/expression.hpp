@@ -38,6 +38,8 @@ class Expression {
   bool uses(int variable) const;
   const std::string& text() const { return text_; }
   bool empty() const { return code_.empty(); }
+  //! Most values a formula may hold pending while it is evaluated.
+  static constexpr int kMaxDepth = 64;
 
  private:
   enum class Op : unsigned char;

@@ -11,6 +11,7 @@
 #include "pellicle/io/json_text.hpp"
 #include "pellicle/io/vtk_arrays.hpp"
 #include "pellicle/surface/errors.hpp"
+#include "pellicle/surface/quadrature.hpp"
 
 namespace pellicle {
 
@@ -71,7 +72,8 @@ SurfaceOutputWriter<D>::SurfaceOutputWriter(
   if (ec) throw std::runtime_error("cannot create " + settings_.directory + ": " + ec.message());
   history_.open(settings_.directory + "/history.csv", std::ios::trunc);
   if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
-  history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual";
+  history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual,area";
+  if (s.pde()) history_ << ",total_phi";
   if (s.pde() && s.pde()->exact()) history_ << ",error_l2,error_max";
   for (const auto& [name, formula] : monitors_) history_ << ",mean_" << name;
   history_ << '\n' << std::setprecision(12);
@@ -85,6 +87,15 @@ void SurfaceOutputWriter<D>::write_row(const SurfaceSimulation<D>& s) {
   history_ << s.time() << ',' << s.step_count() << ',' << s.cloud().size() << ',' << m.added << ','
            << m.merged << ',' << m.removed << ',' << s.last_solve().iterations << ','
            << s.last_solve().residual;
+  point_areas(s.cloud(), s.neighbours(), areas_);
+  double area = 0.0, total = 0.0;
+  const std::vector<double>* phi = s.pde() ? &s.cloud().field(s.pde()->unknown()) : nullptr;
+  for (std::size_t i = 0; i < areas_.size(); ++i) {
+    area += areas_[i];
+    if (phi) total += areas_[i] * (*phi)[i];
+  }
+  history_ << ',' << area;
+  if (phi) history_ << ',' << total;
   if (s.pde() && s.pde()->exact()) {
     const SolutionErrors e = solution_errors(s);
     history_ << ',' << e.relative_l2 << ',' << e.max;

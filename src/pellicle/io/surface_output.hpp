@@ -1,9 +1,10 @@
 #pragma once
 //! The files of a surface run, in its output directory:
 //!   history.csv    time, step, points N(t), points added/merged/removed so far, linear
-//!                  solver iterations and residual, errors against the exact solution (eq 34)
-//!                  when the case gives one, and the mean of each monitor formula; flushed
-//!                  at every row
+//!                  solver iterations and residual, the area Σ A_i and (with a PDE) the
+//!                  integral Σ A_i φ_i (quadrature.hpp), errors against the exact solution
+//!                  (eq 34) when the case gives one, and the mean of each monitor formula;
+//!                  flushed at every row
 //!   surface.pvd    ParaView series of snapshots surface_NNNNNN.vtp (points, normals,
 //!                  velocity, smoothing length, boundary flag, curvature, every field)
 //!   summary.json   final values, version, case hash, wall time, status
@@ -46,6 +47,7 @@ class SurfaceOutputWriter final : public SurfaceObserver<D> {
   double next_row_ = 0.0, next_snapshot_ = 0.0;
   long last_row_ = -1, last_snapshot_ = -1;
   int snapshots_ = 0;
+  std::vector<double> areas_;
 };
 
 extern template class SurfaceOutputWriter<2>;

@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/core/loop_failure.hpp"
 
 namespace pellicle {
 
@@ -81,11 +82,15 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
                      bool keep_side) {
   const long n = static_cast<long>(cloud.size());
   const double c = options.weight_exponent;
+  LoopFailure failure;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     int used = 0;
     const Mat<D> m = direction_matrix(cloud, nb, i, c, false, used);
-    if (used < D - 1 + (D == 3)) too_few(i, used);
+    if (used < D - 1 + (D == 3)) {
+      failure.record(i, used);
+      continue;
+    }
     const Mat<D> old = cloud.frame[i];
     Vec<D> normal;
     Vec<D> boundary_normal = Vec<D>::Zero();
@@ -127,6 +132,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
     if (cloud.boundary[i] && D == 3) hint = boundary_normal;
     cloud.frame[i] = frame_from<D>(normal, hint);
   }
+  if (failure.failed()) too_few(failure.index(), failure.detail());
 }
 
 template <int D>

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/core/loop_failure.hpp"
 #include "pellicle/surface/local_fit.hpp"
 
 namespace pellicle {
@@ -26,14 +27,19 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
   const long n = static_cast<long>(cloud.size());
   st.gradient.resize(nb.index.size());
   st.laplacian.resize(nb.index.size());
+  LoopFailure failure;
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) {
     const int count = nb.count(i);
-    const double h = cloud.smoothing_length[i];
     const auto tangents = cloud.frame[i].template leftCols<T>();
     Vec<D> offsets[kMaxStencilPoints];
-    for (int k = 0; k < std::min(count, kMaxStencilPoints); ++k)
+    double farthest = 0.0;
+    for (int k = 0; k < std::min(count, kMaxStencilPoints); ++k) {
       offsets[k] = cloud.position[nb.index[nb.begin(i) + k]] - cloud.position[i];
+      farthest = std::max(farthest, offsets[k].norm());
+    }
+    // A neighbourhood widened beyond h (neighbours.hpp) weighs over its own reach.
+    const double h = std::max(cloud.smoothing_length[i], farthest);
     // Targets: ∂/∂t_k (eq 18) and Δ_T (eq 26) of the monomials at the centre.
     FitTargets<D, T + 1> b = FitTargets<D, T + 1>::Zero();
     for (int t = 0; t < T; ++t) b(1 + t, t) = 1.0 / h;
@@ -42,7 +48,10 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     FitCoefficients<D, T + 1> c;
     const FitStatus status =
         fit_coefficients<D, T + 1>(offsets, count, tangents, h, options.weight_exponent, b, c);
-    if (status != FitStatus::ok) unfit(i, count, status);
+    if (status != FitStatus::ok) {
+      failure.record(i, static_cast<int>(status));
+      continue;
+    }
     for (int k = 0; k < count; ++k) {
       const long slot = nb.begin(i) + k;
       // Tangential derivatives rotated to x, y, z with c^n = 0 (eqs 21–22).
@@ -50,6 +59,8 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
       st.laplacian[slot] = c(k, T);  // rotation invariant: c^{Δ_M} = c^{Δ_T}
     }
   }
+  if (failure.failed())
+    unfit(failure.index(), nb.count(failure.index()), static_cast<FitStatus>(failure.detail()));
 }
 
 template <int D>

@@ -77,7 +77,8 @@ bool push_candidate(const PointCloud<D>& cloud, const NeighbourSearch<D>& search
   return true;
 }
 
-//! Surfaces: the triangles of the one-ring of i whose circumradius exceeds r_max h and whose
+//! Surfaces: the triangles of the one-ring of i whose circumradius exceeds the largest hole
+//! radius (ManagementOptions::largest_hole_radius) and whose
 //! circumcentre lies inside them; never a triangle of three boundary points.
 void triangle_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& search,
                          const NeighbourLists& nb, std::size_t i, const ManagementOptions& o,
@@ -93,7 +94,7 @@ void triangle_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& s
                      3.0;
     const Circumcircle cc =
         circumcircle(cloud.position[v[0]], cloud.position[v[1]], cloud.position[v[2]]);
-    if (!(cc.radius > o.r_max * h) || !cc.inside()) continue;
+    if (!(cc.radius > o.largest_hole_radius(h)) || !cc.inside()) continue;
     if (!nothing_within(cloud, search, cc.centre, cc.radius * (1.0 - kEmptyTolerance), v, 3))
       continue;
     const double lambda[3] = {cc.barycentric[0], cc.barycentric[1], cc.barycentric[2]};
@@ -101,7 +102,8 @@ void triangle_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& s
   }
 }
 
-//! Curves: the segments to the neighbours on either side longer than 2 r_max h; never a
+//! Curves: the segments to the neighbours on either side longer than twice the largest hole
+//! radius; never a
 //! segment between two boundary points (ends of the curve).
 void segment_candidates(const PointCloud<2>& cloud, const NeighbourSearch<2>& search,
                         const NeighbourLists& nb, std::size_t i, const ManagementOptions& o,
@@ -114,7 +116,7 @@ void segment_candidates(const PointCloud<2>& cloud, const NeighbourSearch<2>& se
     if (cloud.boundary[v[0]] && cloud.boundary[v[1]]) continue;
     const double h = 0.5 * (cloud.smoothing_length[v[0]] + cloud.smoothing_length[v[1]]);
     const double radius = 0.5 * (cloud.position[v[1]] - cloud.position[v[0]]).norm();
-    if (!(radius > o.r_max * h)) continue;
+    if (!(radius > o.largest_hole_radius(h))) continue;
     const Vec2 x_c = 0.5 * (cloud.position[v[0]] + cloud.position[v[1]]);
     if (!nothing_within(cloud, search, x_c, radius * (1.0 - kEmptyTolerance), v, 2)) continue;
     const double lambda[2] = {0.5, 0.5};
@@ -124,7 +126,8 @@ void segment_candidates(const PointCloud<2>& cloud, const NeighbourSearch<2>& se
 
 //! The 1D addition along the boundary of a surface: from boundary point i to the nearest
 //! boundary neighbour on either side along the boundary tangent n × ν; a gap longer than
-//! 2 r_max h gets a point on the boundary curve halfway (boundary_midpoint).
+//! twice the largest hole radius gets a point on the boundary curve halfway
+//! (boundary_midpoint).
 void boundary_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& search,
                          const NeighbourLists& nb, std::size_t i, const ManagementOptions& o,
                          double weight_exponent, std::vector<Candidate<3>>& out) {
@@ -152,7 +155,7 @@ void boundary_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& s
     int v[2] = {std::min(static_cast<int>(i), j), std::max(static_cast<int>(i), j)};
     const double h = 0.5 * (cloud.smoothing_length[v[0]] + cloud.smoothing_length[v[1]]);
     const double half = 0.5 * distance[side];
-    if (!(half > o.r_max * h)) continue;
+    if (!(half > o.largest_hole_radius(h))) continue;
     // Adjacent along the boundary: no other boundary point on the gap.
     const Vec3 mid = 0.5 * (cloud.position[v[0]] + cloud.position[v[1]]);
     search.around(cloud, mid, half, found);

@@ -24,8 +24,18 @@ enum class CurvatureRule {
   midway,
 };
 
+//! What "no hole of size r_max h" (§2) measures inside a surface: the radius of an empty
+//! circle, as §3.4 words the filling ("a circumradius greater than r_max h", default), or
+//! its diameter. The paper's clouds have the spacing of equilateral triangles of
+//! circumdiameter 0.45 h (0.39 h, 5.9 points per h², 15–20 neighbours as it states), but
+//! with the diameter the filling packs an irregular cloud far denser than that (the half
+//! pipe went from 2,500 to 5,600 points per unit area in 90 steps); with the radius a
+//! managed cloud settles near 3.4 points per h² (11 neighbours) and leaves the initial
+//! cloud alone (docs/theory/surface-management.md).
+enum class HoleSize { diameter, radius };
+
 struct ManagementOptions {
-  double r_max = 0.45;               //!< no hole of circumradius r_max h (§2, §3.4)
+  double r_max = 0.45;               //!< no hole of size r_max h (§2, §3.4; see HoleSize)
   double r_min = 0.2;                //!< no two points closer than r_min h (§2, §3.5)
   bool curvature_correction = true;  //!< move new points along n_approx (eqs 6–9)
   //! With curvature_correction. Midway by default: the paper's rule, as its eqs 8–9 read,
@@ -36,7 +46,13 @@ struct ManagementOptions {
   //! from points that see across it: with 1 (the paper's neighbourhood) a cloud whose h is
   //! halved has gaps wider than h that stay unfilled; 2 reaches across them.
   double one_ring_radius = 2.0;
-  int max_fill_passes = 8;   //!< the filling is repeated for the new points (§3.4)
+  int max_fill_passes = 8;  //!< the filling is repeated for the new points (§3.4)
+  HoleSize hole_size = HoleSize::radius;
+  //! The circumradius above which a triangle is a hole (half a gap along curves), at
+  //! smoothing length h.
+  double largest_hole_radius(double h) const {
+    return (hole_size == HoleSize::diameter ? 0.5 : 1.0) * r_max * h;
+  }
   int max_merge_rounds = 8;  //!< merging is repeated while merged points are too close
 };
 

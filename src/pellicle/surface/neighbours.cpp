@@ -29,6 +29,16 @@ struct NeighbourSearch<D>::Tree {
     index = std::make_unique<Index>(D, snapshot, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     index->buildIndex();
   }
+  //! The k points nearest q in the snapshot (indices only).
+  void nearest(const Vec<D>& q, unsigned k, std::vector<unsigned>& index,
+               std::vector<double>& distance) const {
+    index.resize(k);
+    distance.resize(k);
+    index.resize(index_knn(q, k, index.data(), distance.data()));
+  }
+  std::size_t index_knn(const Vec<D>& q, unsigned k, unsigned* i, double* d) const {
+    return this->index->knnSearch(q.data(), k, i, d);
+  }
   //! Candidates within `radius` of q in the snapshot.
   void query(const Vec<D>& q, double radius,
              std::vector<std::pair<unsigned, double>>& matches) const {
@@ -70,7 +80,7 @@ void NeighbourSearch<D>::refresh(const PointCloud<D>& cloud) {
 
 template <int D>
 void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
-                              double radius_factor) {
+                              double radius_factor, int minimum) {
   refresh(cloud);
   const std::size_t n = cloud.size();
   lists.offset.assign(n + 1, 0);
@@ -82,6 +92,8 @@ void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
     auto& mine = found[omp_get_thread_num()];
     mine.clear();
     std::vector<std::pair<unsigned, double>> matches;
+    std::vector<unsigned> closest;
+    std::vector<double> closest_distance;
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const Vec<D>& x = cloud.position[i];
@@ -92,6 +104,18 @@ void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
       for (const auto& [j, ignored] : matches)
         if (j != i && (cloud.position[j] - x).squaredNorm() <= h * h)
           mine.push_back(static_cast<int>(j));
+      if (static_cast<int>(mine.size() - start) - 1 < minimum) {
+        // The nearest points instead; a few extra candidates cover the drift.
+        mine.resize(start + 1);
+        const unsigned k = std::min<std::size_t>(n, minimum + 9);
+        tree_->nearest(x, k, closest, closest_distance);
+        std::vector<std::pair<double, unsigned>> by_distance;
+        for (unsigned j : closest)
+          if (j != i) by_distance.emplace_back((cloud.position[j] - x).squaredNorm(), j);
+        std::sort(by_distance.begin(), by_distance.end());
+        for (std::size_t m = 0; m < by_distance.size() && m < std::size_t(minimum); ++m)
+          mine.push_back(static_cast<int>(by_distance[m].second));
+      }
       std::sort(mine.begin() + start + 1, mine.end());  // independent of the tree's order
       lists.offset[i + 1] = static_cast<long>(mine.size() - start);
     }

@@ -32,8 +32,13 @@ class NeighbourSearch {
   NeighbourSearch(const NeighbourSearch&) = delete;
   NeighbourSearch& operator=(const NeighbourSearch&) = delete;
 
-  //! S_i for every point of `cloud`, within h_i (scaled by `radius_factor`).
-  void find(const PointCloud<D>& cloud, NeighbourLists& lists, double radius_factor = 1.0);
+  //! S_i for every point of `cloud`, within h_i (scaled by `radius_factor`). A point with
+  //! fewer than `minimum` neighbours there (a corner of a surface's boundary, a stretched
+  //! region not yet refilled) takes its `minimum` nearest points instead, so that its
+  //! stencil still has points enough for a quadratic fit (gfdm.hpp widens its weight to
+  //! match).
+  void find(const PointCloud<D>& cloud, NeighbourLists& lists, double radius_factor = 1.0,
+            int minimum = 0);
   //! Points of `cloud` within `radius` of `x` (any place, not only cloud points), for the
   //! cloud as the last `find` saw it (same points, positions since then unchanged). Safe to
   //! call from several threads at once.

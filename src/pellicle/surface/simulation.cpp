@@ -17,7 +17,8 @@ SurfaceSimulation<D>::SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings set
       velocity_(std::move(velocity)),
       pde_(std::move(pde)),
       search_(settings.rebuild_fraction) {
-  search_.find(cloud_, neighbours_);
+  if (settings_.minimum_neighbours == 0) settings_.minimum_neighbours = D == 3 ? 10 : 5;
+  search_.find(cloud_, neighbours_, 1.0, settings_.minimum_neighbours);
   estimate_frames(cloud_, neighbours_, settings_.frames, false);
   orient_consistently(cloud_, neighbours_, reference);  // the sweep of §3.2, once
   update_geometry(true);
@@ -26,7 +27,7 @@ SurfaceSimulation<D>::SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings set
 
 template <int D>
 void SurfaceSimulation<D>::update_geometry(bool keep_side) {
-  search_.find(cloud_, neighbours_);
+  search_.find(cloud_, neighbours_, 1.0, settings_.minimum_neighbours);
   estimate_frames(cloud_, neighbours_, settings_.frames, keep_side);
   build_stencils(cloud_, neighbours_, settings_.gfdm, stencils_);
   if (settings_.refine_normals) {

@@ -37,6 +37,9 @@ struct SurfaceSettings {
   double management_interval = 0.1;
   LinearSolverOptions solver;
   double rebuild_fraction = 0.25;  //!< neighbour tree kept until points move this × h
+  //! Points with fewer neighbours within h take this many nearest ones (neighbours.hpp):
+  //! 10 on surfaces, 5 on curves (monomials to fit: 6 and 3).
+  int minimum_neighbours = 0;
   //! Smooth κ with eq 40 before formulas read it (the paper needs it for curvature flows).
   bool smooth_curvature = true;
 };

@@ -1,0 +1,20 @@
+#pragma once
+//! Integrals over a point cloud: each point stands for a third of the area of its one-ring
+//! triangles (one_ring.hpp; half the length of its two segments on a curve). Where the
+//! one-rings of neighbouring points agree (a Delaunay cloud) every triangle is counted once
+//! in all, so Σ_i A_i is the area of the triangulated surface, second-order accurate; it is
+//! what history.csv's `area` and `total_phi` = Σ_i A_i φ_i use (the half pipe's
+//! conservation check, Suchde & Kuhnert §4.2.2).
+
+#include <vector>
+
+#include "pellicle/surface/neighbours.hpp"
+
+namespace pellicle {
+
+//! A_i for every point, from neighbour lists within h (frames must be current).
+template <int D>
+void point_areas(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
+                 std::vector<double>& area);
+
+}  // namespace pellicle
