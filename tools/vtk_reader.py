@@ -1,9 +1,11 @@
 """Minimal readers for the VTK XML files Pellicle writes.
 
-Supported: UnstructuredGrid (.vtu) files with inline DataArrays in "binary"
-(base64, uncompressed) or "ascii" format, and ParaView collections (.pvd).
+Supported: UnstructuredGrid (.vtu) and PolyData (.vtp) files with inline
+DataArrays in "binary" (base64, uncompressed) or "ascii" format, and ParaView
+collections (.pvd).
 
     points, fields = read_vtu("results/points_000010.vtu")
+    points, fields = read_vtp("results/surface_000010.vtp")
     for time, path in read_pvd("results/points.pvd"): ...
 """
 
@@ -14,7 +16,7 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-__all__ = ["InputError", "read_vtu", "read_pvd"]
+__all__ = ["InputError", "read_vtu", "read_vtp", "read_pvd"]
 
 _TYPES = {
     "Int8": "i1", "UInt8": "u1", "Int16": "i2", "UInt16": "u2",
@@ -102,7 +104,17 @@ def read_vtu(path):
     each PointData array name to an (N,) array (one component) or an (N, k)
     array (k components).
     """
-    root = _parse(path, "UnstructuredGrid")
+    return _read_points(path, "UnstructuredGrid")
+
+
+def read_vtp(path):
+    """Read a .vtp file (a surface snapshot); returns (points, fields) as read_vtu."""
+    return _read_points(path, "PolyData")
+
+
+def _read_points(path, kind):
+    """Points and point fields of the first piece of a `kind` file."""
+    root = _parse(path, kind)
     if root.get("compressor"):
         raise InputError(path, "compressed data is not supported")
     byte_order = "<" if root.get("byte_order", "LittleEndian") == "LittleEndian" else ">"
@@ -111,7 +123,7 @@ def read_vtu(path):
         raise InputError(path, f"unsupported header_type {header_type!r}")
     header_dtype = np.dtype(byte_order + _TYPES[header_type])
 
-    piece = root.find("UnstructuredGrid/Piece")
+    piece = root.find(f"{kind}/Piece")
     if piece is None:
         raise InputError(path, "no <Piece> element")
     count = int(piece.get("NumberOfPoints", "0"))

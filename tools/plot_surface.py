@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Pictures of a Pellicle surface run: its points in 3D coloured by a point field.
+
+Reads a results directory (through its surface.pvd) or a single .vtp file and
+draws one panel per snapshot (up to six evenly spaced with --snapshot all), the
+points seen from one direction and coloured by the field; prints the PNG path.
+"""
+
+import argparse
+import os
+import sys
+
+import numpy as np
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtk_reader import InputError, read_pvd, read_vtp  # noqa: E402
+
+MAX_PANELS = 6
+
+
+def pick(entries, choice, path):
+    """(time, vtp) entries of a collection: an index, 'last' or 'all'."""
+    if not entries:
+        raise InputError(path, "the collection lists no snapshots")
+    if choice == "last":
+        return [entries[-1]]
+    if choice == "all":
+        count = min(MAX_PANELS, len(entries))
+        picks = np.unique(np.round(np.linspace(0, len(entries) - 1, count)).astype(int))
+        return [entries[i] for i in picks]
+    try:
+        return [entries[int(choice)]]
+    except (ValueError, IndexError):
+        raise InputError(path, f"no snapshot {choice!r} (the collection has {len(entries)})") from None
+
+
+def scalar(fields, name, path):
+    """One value per point: the field, or the magnitude of a vector field."""
+    if name not in fields:
+        raise InputError(path, f"unknown field '{name}' (available: {', '.join(sorted(fields))})")
+    data = np.asarray(fields[name], dtype=float)
+    return data if data.ndim == 1 else np.linalg.norm(data, axis=1)
+
+
+def plot(snapshots, field, elevation, azimuth, out):
+    """Draw the panels with one colour scale for all of them."""
+    frames = []
+    for time, path in snapshots:
+        points, fields = read_vtp(path)
+        frames.append((time, points, scalar(fields, field, path)))
+    low = min(v.min() for _, _, v in frames)
+    high = max(v.max() for _, _, v in frames)
+    columns = min(3, len(frames))
+    rows = -(-len(frames) // columns)
+    fig = plt.figure(figsize=(4.5 * columns, 4.2 * rows))
+    every = np.concatenate([p for _, p, _ in frames])
+    centre = 0.5 * (every.min(axis=0) + every.max(axis=0))
+    half = 0.5 * (every.max(axis=0) - every.min(axis=0)).max()
+    for k, (time, points, values) in enumerate(frames):
+        ax = fig.add_subplot(rows, columns, k + 1, projection="3d")
+        drawn = ax.scatter(points[:, 0], points[:, 1], points[:, 2], c=values, s=2,
+                           cmap="viridis", vmin=low, vmax=high, depthshade=False)
+        for axis, set_limits in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
+            set_limits(centre[axis] - half, centre[axis] + half)
+        ax.set_box_aspect((1, 1, 1))
+        ax.view_init(elev=elevation, azim=azimuth)
+        ax.set_title(f"t = {time:g}, {len(points)} points", fontsize=10)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+    fig.colorbar(drawn, ax=fig.axes, shrink=0.6, label=field)
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+def main():
+    parser = argparse.ArgumentParser(
+        description="3D pictures of a surface run's points coloured by a point field.",
+        epilog="Fields written by Pellicle's surface runs include phi, curvature, velocity, "
+               "normal, smoothing_length, boundary and, with an exact solution, exact and error.")
+    parser.add_argument("input", metavar="RESULTS_DIR_OR_VTP",
+                        help="results directory holding surface.pvd, a .pvd file or a .vtp file")
+    parser.add_argument("--field", default="curvature", help="field to colour by (default: curvature)")
+    parser.add_argument("--snapshot", metavar="INDEX|last|all", default="last",
+                        help=f"position in surface.pvd, 'last' (default) or 'all' (up to {MAX_PANELS})")
+    parser.add_argument("--elevation", type=float, default=25.0, help="view elevation, degrees")
+    parser.add_argument("--azimuth", type=float, default=-60.0, help="view azimuth, degrees")
+    parser.add_argument("--out", metavar="PNG", help="output (default: <dir>/surface_<field>.png)")
+    args = parser.parse_args()
+    path = os.path.join(args.input, "surface.pvd") if os.path.isdir(args.input) else args.input
+    try:
+        if path.endswith(".vtp"):
+            if not os.path.isfile(path):
+                raise InputError(path, "no such file")
+            snapshots = [(float("nan"), path)]
+        else:
+            snapshots = pick(read_pvd(path), args.snapshot, path)
+        out = args.out or os.path.join(os.path.dirname(path), f"surface_{args.field}.png")
+        plot(snapshots, args.field, args.elevation, args.azimuth, out)
+    except InputError as err:
+        parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
+    except OSError as err:
+        parser.exit(2, f"{parser.prog}: error: {err.filename}: {err.strerror}\n")
+    print(out)
+
+
+if __name__ == "__main__":
+    main()
