@@ -57,6 +57,10 @@ Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, st
   return m;
 }
 
+//! Boundary neighbours whose second spread is above this share of the first lie along two
+//! directions: the point is a corner of the boundary.
+constexpr double kCornerSpread = 0.3;
+
 [[noreturn]] void too_few(std::size_t i, int found) {
   throw NumericalError({0.0, 0, "surface", static_cast<long>(i)},
                        "point " + std::to_string(i) + " has " + std::to_string(found) +
@@ -100,10 +104,11 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
       int boundary_used = 0;
       const Mat3 mb =
           cloud.boundary[i] ? direction_matrix(cloud, nb, i, c, true, boundary_used) : Mat3::Zero();
-      if (boundary_used > 0) {
+      Eigen::SelfAdjointEigenSolver<Mat3> along(mb);
+      const Vec3 spread = along.eigenvalues();
+      if (boundary_used > 0 && spread[1] < kCornerSpread * spread[2]) {
         // §3.2 at the boundary: the boundary tangent from the boundary neighbours (their
         // main direction), the normal minimising eq 4 among directions orthogonal to it.
-        Eigen::SelfAdjointEigenSolver<Mat3> along(mb);
         const Vec3 tb = along.eigenvectors().col(2);
         Eigen::Matrix<double, 3, 2> plane;
         plane.col(0) = tangent_in_plane(tb, old.col(0));
@@ -117,8 +122,16 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
     if (!done) {
       Eigen::SelfAdjointEigenSolver<Mat<D>> solver(m);
       normal = solver.eigenvectors().col(0);  // smallest eigenvalue first
-      if constexpr (D == 2)
+      if constexpr (D == 2) {
         if (cloud.boundary[i]) boundary_normal = Vec2(normal.y(), -normal.x());
+      } else if (cloud.boundary[i]) {
+        // A corner: the boundary neighbours spread in two directions and have no main one.
+        // ν is then the direction away from the neighbours within the tangent plane.
+        Vec3 inward = Vec3::Zero();
+        for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) inward += cloud.position[nb.index[k]] - x;
+        inward -= inward.dot(normal) * normal;
+        boundary_normal = -inward.normalized();
+      }
     }
     if (keep_side && normal.dot(old.col(D - 1)) < 0.0) normal = -normal;  // eq 5
     if (cloud.boundary[i]) {
