@@ -3,39 +3,16 @@
 #include <chrono>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/io/progress_observer.hpp"
 
 namespace pellicle {
 
-namespace {
-template <int D>
-class ProgressObserver final : public StepObserver<D> {
- public:
-  ProgressObserver(ProgressListener* listener, std::chrono::steady_clock::time_point start)
-      : listener_(listener), start_(start) {}
-  void after_step(const Simulation<D>& s) override {
-    if (listener_) listener_->update(report(s));
-  }
-  ProgressReport report(const Simulation<D>& s) const {
-    ProgressReport r;
-    r.fraction = std::min(1.0, s.time() / s.settings().end_time);
-    r.time = s.time();
-    r.step = s.step_count();
-    r.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    return r;
-  }
-
- private:
-  ProgressListener* listener_;
-  std::chrono::steady_clock::time_point start_;
-};
-}  // namespace
 
 template <int D>
 RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
                              ProgressListener* progress, const std::string& case_hash) {
   const auto start = std::chrono::steady_clock::now();
-  ProgressObserver<D> observer(progress, start);
+  ProgressObserver<Simulation<D>, StepObserver<D>> observer(progress, start);
   simulation.add_observer(&output);
   simulation.add_observer(&observer);
   struct Detach {  // the observers live only as long as this call

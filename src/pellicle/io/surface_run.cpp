@@ -3,40 +3,17 @@
 #include <chrono>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/io/progress_observer.hpp"
 
 namespace pellicle {
 
-namespace {
-template <int D>
-class SurfaceProgress final : public SurfaceObserver<D> {
- public:
-  SurfaceProgress(ProgressListener* listener, std::chrono::steady_clock::time_point start)
-      : listener_(listener), start_(start) {}
-  void after_step(const SurfaceSimulation<D>& s) override {
-    if (listener_) listener_->update(report(s));
-  }
-  ProgressReport report(const SurfaceSimulation<D>& s) const {
-    ProgressReport r;
-    r.fraction = std::min(1.0, s.time() / s.settings().end_time);
-    r.time = s.time();
-    r.step = s.step_count();
-    r.wall_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    return r;
-  }
-
- private:
-  ProgressListener* listener_;
-  std::chrono::steady_clock::time_point start_;
-};
-}  // namespace
 
 template <int D>
 RunStatistics run_surface_simulation(SurfaceSimulation<D>& simulation,
                                      SurfaceOutputWriter<D>& output, ProgressListener* progress,
                                      const std::string& case_hash) {
   const auto start = std::chrono::steady_clock::now();
-  SurfaceProgress<D> observer(progress, start);
+  ProgressObserver<SurfaceSimulation<D>, SurfaceObserver<D>> observer(progress, start);
   simulation.add_observer(&output);
   simulation.add_observer(&observer);
   double point_steps = 0.0;
