@@ -71,5 +71,6 @@ Outcome surface_cdr_sphere(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);
 Outcome surface_movement(Resolution resolution);
+Outcome surface_point_addition(Resolution resolution);
 
 }  // namespace pellicle::validation
