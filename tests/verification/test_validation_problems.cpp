@@ -22,6 +22,8 @@
 //   friction-block   Coulomb friction: block on an incline within 3% of g(sin θ − μ cos θ)
 //   surface-movement Suchde & Kuhnert §3.7.1–2: first- vs second-order movement of a rotating
 //                    quarter sphere; the deforming hemisphere with management converging in Δt
+//   surface-point-addition §3.7.4: midway placement below half the circumcentre's error,
+//                    faster than h²; the circumcentre's error second order
 //   surface-cdr-sphere §4.2.1: Tables 2 and 3 (errors within 1.5×, orders within 0.2)
 //   surface-wave-sphere §4.2.4: Table 4 (same tolerances)
 //   laplace-spectrum  −Δ_M eigenvalues on the sphere (l(l+1)) and a torus within 1%
@@ -102,6 +104,9 @@ TEST(Validation, NormalsAccuracy) {
 
 TEST(Validation, SurfaceMovement) {
   expect_all_checks_pass("surface-movement");
+}
+TEST(Validation, SurfacePointAddition) {
+  expect_all_checks_pass("surface-point-addition");
 }
 TEST(Validation, SurfaceCdrSphere) {
   expect_all_checks_pass("surface-cdr-sphere");
