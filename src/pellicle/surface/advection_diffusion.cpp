@@ -55,16 +55,14 @@ class AdvectionDiffusion final : public SurfacePde<D> {
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const PointValues v = s.values_at(i, t);  // φ = φⁿ for the explicit source
-      if (cloud.boundary[i] && boundary_ == SurfaceBoundary::zero_flux) {
-        zero_flux_row(cloud, nb, st, i, values);
-        rhs_[i] = 0.0;
-      } else if (cloud.boundary[i]) {
+      if (cloud.boundary[i] && boundary_ == SurfaceBoundary::dirichlet) {
         value_row(nb, i, values);
         rhs_[i] = (boundary_value_.empty() ? exact_ : boundary_value_)(v);
-      } else {
-        interior_row(nb, st, i, 1.0 / dt + divergence[i] - reaction_(v), alpha_, values);
-        rhs_[i] = phi[i] / dt + source_(v);
+        continue;
       }
+      operator_row(nb, st, i, 1.0 / dt + divergence[i] - reaction_(v), alpha_,
+                   cloud.boundary[i] != 0, values);
+      rhs_[i] = phi[i] / dt + source_(v);
     }
     s.record_solve(s.system().solve(nb, rhs_, phi, s.settings().solver));
   }

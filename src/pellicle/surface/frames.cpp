@@ -128,7 +128,8 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
         // A corner: the boundary neighbours spread in two directions and have no main one.
         // ν is then the direction away from the neighbours within the tangent plane.
         Vec3 inward = Vec3::Zero();
-        for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) inward += cloud.position[nb.index[k]] - x;
+        for (long k = nb.begin(i) + 1; k < nb.end(i); ++k)
+          inward += cloud.position[nb.index[k]] - x;
         inward -= inward.dot(normal) * normal;
         boundary_normal = -inward.normalized();
       }

@@ -27,6 +27,7 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
   const long n = static_cast<long>(cloud.size());
   st.gradient.resize(nb.index.size());
   st.laplacian.resize(nb.index.size());
+  st.zero_flux_laplacian.resize(nb.index.size());
   LoopFailure failure;
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) {
@@ -57,7 +58,21 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
       // Tangential derivatives rotated to x, y, z with c^n = 0 (eqs 21–22).
       st.gradient[slot] = tangents * c.row(k).template head<T>().transpose();
       st.laplacian[slot] = c(k, T);  // rotation invariant: c^{Δ_M} = c^{Δ_T}
+      st.zero_flux_laplacian[slot] = c(k, T);
     }
+    if (!cloud.boundary[i]) continue;
+    // h ν · ∇ of the monomials at the centre: ν's tangent components on the s_k entries.
+    const Eigen::Matrix<double, T, 1> nu = tangents.transpose() * cloud.boundary_normal[i];
+    FitCondition<D> zero_flux = FitCondition<D>::Zero();
+    for (int t = 0; t < T; ++t) zero_flux(1 + t) = nu[t];
+    FitTargets<D, 1> laplacian = b.template rightCols<1>();
+    FitCoefficients<D, 1> cz;
+    if (fit_coefficients<D, 1>(offsets, count, tangents, h, options.weight_exponent, laplacian, cz,
+                               &zero_flux) != FitStatus::ok) {
+      failure.record(i, static_cast<int>(FitStatus::degenerate));
+      continue;
+    }
+    for (int k = 0; k < count; ++k) st.zero_flux_laplacian[nb.begin(i) + k] = cz(k, 0);
   }
   if (failure.failed())
     unfit(failure.index(), nb.count(failure.index()), static_cast<FitStatus>(failure.detail()));

@@ -27,6 +27,11 @@ template <int D>
 struct SurfaceStencils {
   std::vector<Vec<D>> gradient;   //!< (c^{M,x}, c^{M,y}, c^{M,z}) of eqs 20–21
   std::vector<double> laplacian;  //!< c^{Δ_M} of eq 25
+  //! At boundary points: Δ_M of the fit that also has zero normal flux, ν · ∇_M u = 0, at
+  //! the point (the condition enters the least squares as one more datum, local_fit.hpp).
+  //! A PDE row with it keeps its time-derivative diagonal where a row ν · ∇_M u = 0 would
+  //! replace it, and stays diagonally dominant. Elsewhere a copy of `laplacian`.
+  std::vector<double> zero_flux_laplacian;
 };
 
 //! Build every point's stencils. Throws NumericalError naming the point when its

@@ -62,12 +62,8 @@ class Wave final : public SurfacePde<D> {
     const double c2 = speed_ * speed_;
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
-      if (cloud.boundary[i]) {
-        zero_flux_row(cloud, nb, st, i, values);
-        rhs_[i] = 0.0;
-        continue;
-      }
-      interior_row(nb, st, i, 1.0 / (dt * dt) + divergence[i] / dt, c2, values);
+      operator_row(nb, st, i, 1.0 / (dt * dt) + divergence[i] / dt, c2, cloud.boundary[i] != 0,
+                   values);
       rhs_[i] = (2.0 * phi[i] - previous[i]) / (dt * dt) + divergence[i] * phi[i] / dt + f[i];
     }
     next_ = phi;
