@@ -5,7 +5,8 @@
 //!   1. velocity  v⁽ⁿ⁾ from the case's formulas at the current points (φⁿ, n, κ)
 //!   2. move      eq 3 (eq 2 at the first step)
 //!   3. geometry  neighbours, frames kept on their side (eq 5), stencils (eqs 17–27)
-//!   4. manage    fill holes, merge close points (§3.4–3.5); geometry again if changed
+//!   4. manage    fill holes, merge close points (§3.4–3.5) once points have moved a tenth
+//!                of h since the last time; geometry again if the cloud changed
 //!   5. pde       one implicit step on the new cloud with ∇_M · v⁽ⁿ⁺¹⁾ (eq 29, eq 45)
 //!   6. observe   output, failure checks
 
