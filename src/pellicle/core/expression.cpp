@@ -103,8 +103,8 @@ class ExpressionParser {
     }
     if (out_.max_stack_ > Expression::kMaxDepth)
       throw ExpressionError(1, "formula nested too deeply (more than " +
-                                   std::to_string(Expression::kMaxDepth) +
-                                   " pending values): \"" + text_ + "\"");
+                                   std::to_string(Expression::kMaxDepth) + " pending values): \"" +
+                                   text_ + "\"");
   }
 
  private:

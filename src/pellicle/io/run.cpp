@@ -7,7 +7,6 @@
 
 namespace pellicle {
 
-
 template <int D>
 RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
                              ProgressListener* progress, const std::string& case_hash) {

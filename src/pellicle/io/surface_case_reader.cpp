@@ -66,10 +66,10 @@ void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) 
   m.r_max = t->number_or("r_max", m.r_max, NumberRange::open_closed(0.0, 1.0));
   m.r_min = t->number_or("r_min", m.r_min, NumberRange::open_closed(0.0, 1.0));
   m.curvature_correction = t->flag_or("curvature_correction", true);
-  m.curvature_rule = t->choice("curvature_rule", {"midway", "tangent-planes"}, "midway") ==
-                             "tangent-planes"
-                         ? CurvatureRule::tangent_planes
-                         : CurvatureRule::midway;
+  m.curvature_rule =
+      t->choice("curvature_rule", {"midway", "tangent-planes"}, "midway") == "tangent-planes"
+          ? CurvatureRule::tangent_planes
+          : CurvatureRule::midway;
   c.settings.management_interval =
       t->number_or("interval", c.settings.management_interval, NumberRange::closed(0.0, 1.0));
   if (m.r_min >= m.r_max) t->fail("r_min", "expected r_min below r_max");

@@ -7,7 +7,6 @@
 
 namespace pellicle {
 
-
 template <int D>
 RunStatistics run_surface_simulation(SurfaceSimulation<D>& simulation,
                                      SurfaceOutputWriter<D>& output, ProgressListener* progress,
