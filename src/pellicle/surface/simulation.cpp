@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pellicle/core/error.hpp"
 
@@ -88,6 +89,10 @@ void SurfaceSimulation<D>::step() {
   try {
     advance_one_step();
   } catch (const NumericalError& e) {  // the stages know the point, not the time
+    // A failure inside point management leaves the curvature of the old points: unknown now
+    // (the snapshot written at the failure shows NaN rather than a misaligned array).
+    if (curvature_.size() != cloud_.size())
+      curvature_.assign(cloud_.size(), std::numeric_limits<double>::quiet_NaN());
     throw NumericalError({time_, steps_, "surface", e.context().point}, e.reason());
   }
 }
