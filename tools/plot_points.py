@@ -18,32 +18,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtk_reader import InputError, read_pvd, read_vtu  # noqa: E402
+from vtk_reader import MAX_PANELS, InputError, read_pvd, read_vtu, select_snapshots  # noqa: E402
 
-MAX_PANELS = 6
 # Component names accepted by --component, by number of components.
 COMPONENT_NAMES = {
     3: ["x", "y", "z"],
     6: ["xx", "yy", "zz", "xy", "yz", "xz"],
 }
-
-
-def select_snapshots(entries, choice, path):
-    """Pick (time, vtu) entries from a collection: an index, 'last' or 'all'."""
-    if not entries:
-        raise InputError(path, "the collection lists no snapshots")
-    if choice == "last":
-        return [entries[-1]]
-    if choice == "all":
-        count = min(MAX_PANELS, len(entries))
-        picks = np.unique(np.round(np.linspace(0, len(entries) - 1, count)).astype(int))
-        return [entries[i] for i in picks]
-    try:
-        return [entries[int(choice)]]
-    except (ValueError, IndexError):
-        raise InputError(path, f"no snapshot {choice!r} (the collection has "
-                               f"{len(entries)}: use 0..{len(entries) - 1}, "
-                               "-1, 'last' or 'all')") from None
 
 
 def field_values(fields, name, component, path):

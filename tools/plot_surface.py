@@ -17,26 +17,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtk_reader import InputError, read_pvd, read_vtp  # noqa: E402
-
-MAX_PANELS = 6
-
-
-def pick(entries, choice, path):
-    """(time, vtp) entries of a collection: an index, 'last' or 'all'."""
-    if not entries:
-        raise InputError(path, "the collection lists no snapshots")
-    if choice == "last":
-        return [entries[-1]]
-    if choice == "all":
-        count = min(MAX_PANELS, len(entries))
-        picks = np.unique(np.round(np.linspace(0, len(entries) - 1, count)).astype(int))
-        return [entries[i] for i in picks]
-    try:
-        return [entries[int(choice)]]
-    except (ValueError, IndexError):
-        raise InputError(path, f"no snapshot {choice!r} (the collection has {len(entries)})") from None
-
+from vtk_reader import MAX_PANELS, InputError, read_pvd, read_vtp, select_snapshots  # noqa: E402
 
 def scalar(fields, name, path):
     """One value per point: the field, or the magnitude of a vector field."""
@@ -98,7 +79,7 @@ def main():
                 raise InputError(path, "no such file")
             snapshots = [(float("nan"), path)]
         else:
-            snapshots = pick(read_pvd(path), args.snapshot, path)
+            snapshots = select_snapshots(read_pvd(path), args.snapshot, path)
         out = args.out or os.path.join(os.path.dirname(path), f"surface_{args.field}.png")
         plot(snapshots, args.field, args.elevation, args.azimuth, out)
     except InputError as err:

@@ -16,7 +16,10 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
-__all__ = ["InputError", "read_vtu", "read_vtp", "read_pvd"]
+__all__ = ["InputError", "read_vtu", "read_vtp", "read_pvd", "select_snapshots", "MAX_PANELS"]
+
+# Most snapshots a picture series shows.
+MAX_PANELS = 6
 
 _TYPES = {
     "Int8": "i1", "UInt8": "u1", "Int16": "i2", "UInt16": "u2",
@@ -162,3 +165,21 @@ def read_pvd(path):
             raise InputError(path, f"bad timestep for {name}") from None
         entries.append((time, os.path.join(folder, name)))
     return entries
+
+
+def select_snapshots(entries, choice, path):
+    """Pick (time, vtu) entries from a collection: an index, 'last' or 'all'."""
+    if not entries:
+        raise InputError(path, "the collection lists no snapshots")
+    if choice == "last":
+        return [entries[-1]]
+    if choice == "all":
+        count = min(MAX_PANELS, len(entries))
+        picks = np.unique(np.round(np.linspace(0, len(entries) - 1, count)).astype(int))
+        return [entries[i] for i in picks]
+    try:
+        return [entries[int(choice)]]
+    except (ValueError, IndexError):
+        raise InputError(path, f"no snapshot {choice!r} (the collection has "
+                               f"{len(entries)}: use 0..{len(entries) - 1}, "
+                               "-1, 'last' or 'all')") from None

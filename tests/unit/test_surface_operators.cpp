@@ -118,13 +118,9 @@ TEST(SurfaceFrames, PlaneNormalsExactAndSphereOutward) {
 TEST(SurfaceGfdm, ExactForQuadraticsInThePlane) {
   const double tilt = 0.4;
   auto c = test::random_patch(1500, 0.2, tilt);
-  NeighbourSearch<3> search;
   NeighbourLists nb;
-  search.find(c, nb);
-  estimate_frames(c, nb, FrameOptions{}, false);
-  orient_consistently(c, nb);
   SurfaceStencils<3> st;
-  build_stencils(c, nb, GfdmOptions{}, st);
+  prepare(c, nb, st, false);
   const Vec3 e1(1, 0, 0), e2(0, std::cos(tilt), std::sin(tilt));
   std::vector<double> u(c.size());
   for (std::size_t i = 0; i < c.size(); ++i) {
@@ -238,13 +234,9 @@ TEST(SurfaceGfdm, CurveOperatorsOnACircle) {
 // (I − Δt Δ_M) u = b on a sphere, solved by BiCGSTAB: the residual is what was asked for.
 TEST(SurfaceSparseSystem, ImplicitDiffusionSolve) {
   auto c = test::jittered_sphere(1.0, 0.2);
-  NeighbourSearch<3> search;
   NeighbourLists nb;
-  search.find(c, nb);
-  estimate_frames(c, nb, FrameOptions{}, false);
-  orient_consistently(c, nb);
   SurfaceStencils<3> st;
-  build_stencils(c, nb, GfdmOptions{}, st);
+  prepare(c, nb, st, false);
   const double dt = 0.05;
   SparseSystem system;
   system.values.resize(nb.index.size());

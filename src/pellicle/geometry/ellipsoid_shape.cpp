@@ -103,11 +103,7 @@ class EllipsoidShape final : public SurfaceShape<D> {
   double surface_error(const Vec<D>& x) const override { return (x - project(x)).norm(); }
 
   PointSample<D> sample(const SamplingOptions& options) const override {
-    SampleRandom random(options.seed);
-    const Projection<D> onto = [this](const Vec<D>& x) { return project(x); };
-    return select_spaced<D>(
-        *this, {}, carrier_candidates<D>(carrier_, onto, kCandidateCell * options.spacing, random),
-        options.spacing, random);
+    return sample_closed<D>(*this, carrier_, options);
   }
 
  private:

@@ -125,4 +125,16 @@ inline constexpr double kCandidateCell = 0.25;
 //! Distances from the front's origin are ordered to this fraction of the spacing (step 3).
 inline constexpr double kFrontResolution = 0.02;
 
+//! Steps 2–3 for a shape without boundary: candidates on `carrier` projected onto the shape
+//! by its own closest point, then spaced.
+template <int D>
+PointSample<D> sample_closed(const SurfaceShape<D>& shape, const std::vector<Simplex<D>>& carrier,
+                             const SamplingOptions& options) {
+  SampleRandom random(options.seed);
+  const Projection<D> onto = [&shape](const Vec<D>& x) { return shape.project(x); };
+  return select_spaced<D>(
+      shape, {}, carrier_candidates<D>(carrier, onto, kCandidateCell * options.spacing, random),
+      options.spacing, random);
+}
+
 }  // namespace pellicle

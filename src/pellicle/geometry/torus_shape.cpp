@@ -35,11 +35,7 @@ class TorusShape final : public SurfaceShape<3> {
   }
 
   PointSample<3> sample(const SamplingOptions& options) const override {
-    SampleRandom random(options.seed);
-    const Projection<3> onto = [this](const Vec3& x) { return project(x); };
-    return select_spaced<3>(
-        *this, {}, carrier_candidates<3>(carrier_, onto, kCandidateCell * options.spacing, random),
-        options.spacing, random);
+    return sample_closed<3>(*this, carrier_, options);
   }
 
  private:

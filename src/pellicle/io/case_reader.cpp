@@ -13,6 +13,16 @@
 
 namespace pellicle {
 
+OutputSettings read_output_settings(TomlParameters& o, const std::string& name, double end_time) {
+  OutputSettings out;
+  out.directory = o.text_or("directory", "results/" + name);
+  out.history_interval =
+      o.number_or("history_interval", end_time / 1000.0, NumberRange::non_negative());
+  out.snapshot_interval =
+      o.number_or("snapshot_interval", end_time / 20.0, NumberRange::non_negative());
+  return out;
+}
+
 SourceLocation location_of(const toml::source_region& src, const std::string& file) {
   return {src.path ? *src.path : file, static_cast<int>(src.begin.line),
           static_cast<int>(src.begin.column)};
@@ -239,11 +249,7 @@ void read_solver(TomlParameters& root, Case<D>& c) {
 template <int D>
 void read_output(TomlParameters& root, Case<D>& c) {
   auto o = root.sub_table("output", false);
-  c.output.directory = o->text_or("directory", "results/" + c.name);
-  c.output.history_interval =
-      o->number_or("history_interval", c.settings.end_time / 1000.0, NumberRange::non_negative());
-  c.output.snapshot_interval =
-      o->number_or("snapshot_interval", c.settings.end_time / 20.0, NumberRange::non_negative());
+  c.output = read_output_settings(*o, c.name, c.settings.end_time);
   c.output.grid_snapshots = o->flag_or("grid_snapshots", false);
 }
 

@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/io/case.hpp"
 
 namespace pellicle {
 
@@ -18,5 +19,11 @@ struct CaseSource {
 
 //! file:line:col of a node.
 SourceLocation location_of(const toml::source_region& src, const std::string& file);
+
+class TomlParameters;
+//! The keys every case's `[output]` shares: directory, history_interval and
+//! snapshot_interval (defaults from the case name and end time).
+OutputSettings read_output_settings(TomlParameters& output, const std::string& name,
+                                    double end_time);
 
 }  // namespace pellicle

@@ -121,11 +121,7 @@ void read_solver(TomlParameters& root, SurfaceCase<D>& c) {
 template <int D>
 void read_output(TomlParameters& root, SurfaceCase<D>& c) {
   auto o = root.sub_table("output", false);
-  c.output.directory = o->text_or("directory", "results/" + c.name);
-  c.output.history_interval =
-      o->number_or("history_interval", c.settings.end_time / 1000.0, NumberRange::non_negative());
-  c.output.snapshot_interval =
-      o->number_or("snapshot_interval", c.settings.end_time / 20.0, NumberRange::non_negative());
+  c.output = read_output_settings(*o, c.name, c.settings.end_time);
   if (!o->has("monitors")) return;
   auto monitors = o->sub_table("monitors", true);
   const toml::node* node = o->take("monitors");
