@@ -206,6 +206,31 @@ TEST(SurfaceManagement, FillsAHoleAndABoundaryGapInAPlanePatch) {
     EXPECT_TRUE(!c.boundary[i] || patch.on_edge(c.position[i])) << i;
 }
 
+// An interior point on a boundary gap (one added near the boundary before the gap grew into
+// a hole) would keep the gap from being filled; it becomes the gap's boundary point instead:
+// moved onto the edge, with ν and the values there, and no point is added.
+TEST(SurfaceManagement, InteriorPointOnABoundaryGapBecomesItsBoundaryPoint) {
+  const Patch patch;
+  const int n = 26;  // spacing 0.04 = 0.4 h; without i = 11, 12 the gap is 1.2 h
+  auto c = patch.cloud(n, [](int i, int j, double, double) { return j != 0 || i < 11 || i > 12; });
+  const double a = -0.5 + 11.5 / (n - 1);
+  const std::size_t planted = c.add_point(patch.at(a + 0.003, -0.5 + 0.006), 0.1, false);
+  patch.fill(c, planted);
+  NeighbourSearch<3> search;
+  prepare_frames(c, search, false);
+  const std::size_t before = c.size();
+  const ManagementReport report = manage_points(c, search, ManagementOptions{}, FrameOptions{});
+  EXPECT_EQ(report.promoted, 1);
+  EXPECT_EQ(report.added, 0);
+  ASSERT_EQ(c.size(), before);
+  ASSERT_EQ(c.boundary[planted], 1);
+  const Eigen::Vector2d p = patch.coordinates(c.position[planted]);
+  EXPECT_NEAR(p[1], -0.5, 1e-12);  // on the edge, halfway along the gap
+  EXPECT_NEAR(p[0], a, 0.01);
+  EXPECT_NEAR(c.field(0)[planted], Patch::u(p), 1e-10);
+  EXPECT_LT((c.boundary_normal[planted] + patch.e2).norm(), 1e-9);
+}
+
 // The same hole with its rim flagged as boundary (a hole in the manifold, not in the cloud)
 // stays open: no triangle of three boundary points is filled.
 TEST(SurfaceManagement, LeavesAHoleInTheManifoldOpen) {

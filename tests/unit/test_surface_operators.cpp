@@ -167,6 +167,39 @@ TEST(SurfaceGfdm, ZeroFluxLaplacianAtTheBoundary) {
   EXPECT_GT(checked, 20);
 }
 
+// A corner (x, y ≥ −1): zero flux through both edges means ∇u = 0 there, and the corner's
+// fit has no slope at all; exact for quadratics with that property, and its centre
+// coefficient negative (a free one-sided quadratic's is positive: docs/theory/surface-gfdm.md).
+// Along the edges the centre coefficient is negative too.
+TEST(SurfaceGfdm, ZeroFluxLaplacianAtACorner) {
+  auto c = test::random_patch(1500, 0.2);
+  for (auto& x : c.position) x = x.cwiseMax(Vec3(-0.97, -0.97, 0.0));
+  for (int k = 0; k <= 40; ++k) c.add_point(Vec3(-1.0 + k * 0.05, -1.0, 0.0), 0.2, true);
+  for (int k = 1; k <= 40; ++k) c.add_point(Vec3(-1.0, -1.0 + k * 0.05, 0.0), 0.2, true);
+  NeighbourLists nb;
+  SurfaceStencils<3> st;
+  prepare(c, nb, st, false);
+  std::vector<double> u(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const double a = c.position[i].x() + 1.0, b = c.position[i].y() + 1.0;
+    u[i] = a * a + a * b + 2.0 * b * b;  // Δu = 6, ∇u = 0 at the corner
+  }
+  std::size_t corner = 0;
+  while ((c.position[corner] - Vec3(-1, -1, 0)).norm() > 1e-12) ++corner;
+  EXPECT_EQ(c.corner[corner], 1);
+  double lu = 0.0;
+  for (long k = nb.begin(corner); k < nb.end(corner); ++k)
+    lu += st.zero_flux_laplacian[k] * u[nb.index[k]];
+  EXPECT_NEAR(lu, 6.0, 1e-8);
+  int edges = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    if (!c.boundary[i] || c.position[i].maxCoeff() > 0.7) continue;
+    EXPECT_LT(st.zero_flux_laplacian[nb.begin(i)], 0.0) << c.position[i].transpose();
+    edges += c.corner[i] ? 0 : 1;
+  }
+  EXPECT_GT(edges, 50);
+}
+
 // Δ_M (xy) = −6 xy/r², ∇_M · n = 2/r on a sphere. With the eq 4 normals alone the curvature
 // error stalls at 3 % (their O(h) tilt on an uneven cloud); with the refined normals it
 // falls as h² (2.3e-4, 5.7e-5, 1.4e-5). The Laplace–Beltrami stencil's own truncation error
@@ -255,6 +288,24 @@ TEST(SurfaceSparseSystem, ImplicitDiffusionSolve) {
     norm += b[i] * b[i] / std::pow(1 + 6 * dt, 2);
   }
   EXPECT_LT(std::sqrt(err / norm), 5e-3);
+}
+
+// A row whose diagonal is not positive would amplify its point's value: refused, naming it.
+TEST(SurfaceSparseSystem, NonPositiveDiagonalIsANumericalError) {
+  NeighbourLists nb;
+  nb.index = {0, 1, 1, 0};
+  nb.offset = {0, 2, 4};
+  SparseSystem system;
+  system.values = {2.0, -1.0, -0.5, -1.0};  // row 1: diagonal −0.5
+  std::vector<double> b{1.0, 1.0}, u{0.0, 0.0};
+  try {
+    system.solve(nb, b, u, LinearSolverOptions{});
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("row 1 of the implicit step has the diagonal -0.5"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // −Δ_M on the unit sphere: l(l + 1) = 0, 2 (×3), 6 (×5), 12 (×7).

@@ -232,42 +232,54 @@ TEST(SurfaceShapes, TorusErrorIsEquation15) {
   check_cloud<3>(*torus, cloud, s, probes, F);
 }
 
+// §4.2.2: pipe radius 0.25, arc radius 0.75, here over 180°; each of the three halves.
 TEST(SurfaceShapes, HalfPipeEdgesAndEndsAreTheBoundary) {
-  // §4.2.2: pipe radius 0.25, arc radius 0.75, here over 180°.
   const double rho = 0.25, R = 0.75, half = 0.5 * pi;
-  const auto pipe = make_half_pipe_shape(rho, R, 2 * half);
   const double s = 0.03;
-  const auto cloud = pipe->sample({s, 6});
   auto at = [&](double t, double p) {
     return Vec3((R + rho * std::cos(p)) * std::cos(t), rho * std::sin(p),
                 (R + rho * std::cos(p)) * std::sin(t));
   };
-  SampleRandom random(4);
-  std::vector<Vec3> probes, rims;
-  for (int k = 0; k < 20000; ++k)
-    probes.push_back(at(half * (2 * random.uniform() - 1), pi * random.uniform()));
-  for (int k = 0; k <= 500; ++k) {
-    const double t = half * (2.0 * k / 500 - 1), p = pi * k / 500;
-    for (const Vec3& x : {at(t, 0), at(t, pi), at(-half, p), at(half, p)}) rims.push_back(x);
-  }
-  check_cloud<3>(*pipe, cloud, s, probes, [&](const Vec3& x) {
-    const double r = std::hypot(x.x(), x.z());
-    return (R - r) * (R - r) + x.y() * x.y() - rho * rho;
-  });
-  std::vector<Vec3> flagged;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Vec3& x = cloud.points[i];
-    EXPECT_GE(x.y(), -1e-12);
-    // Distance off the planes of the edges (y = 0) and of the ends (x = 0 for 180°).
-    const double off = std::min(std::abs(x.y()), std::abs(x.x()));
-    if (cloud.boundary[i]) {
-      EXPECT_LE(off, 1e-12) << x.transpose();
-      flagged.push_back(x);
-    } else {
-      EXPECT_GT(off, 0.5 * s) << x.transpose();
+  const std::pair<HalfPipeSide, double> sides[] = {
+      {HalfPipeSide::inner, 0.5 * pi}, {HalfPipeSide::outer, -0.5 * pi}, {HalfPipeSide::upper, 0.0}};
+  for (const auto& [side, phi0] : sides) {
+    SCOPED_TRACE(phi0);
+    const auto pipe = make_half_pipe_shape(rho, R, 2 * half, side);
+    const auto cloud = pipe->sample({s, 6});
+    SampleRandom random(4);
+    std::vector<Vec3> probes, rims;
+    for (int k = 0; k < 20000; ++k)
+      probes.push_back(at(half * (2 * random.uniform() - 1), phi0 + pi * random.uniform()));
+    for (int k = 0; k <= 500; ++k) {
+      const double t = half * (2.0 * k / 500 - 1), p = phi0 + pi * k / 500;
+      for (const Vec3& x : {at(t, phi0), at(t, phi0 + pi), at(-half, p), at(half, p)})
+        rims.push_back(x);
     }
+    check_cloud<3>(*pipe, cloud, s, probes, [&](const Vec3& x) {
+      const double r = std::hypot(x.x(), x.z());
+      return (R - r) * (R - r) + x.y() * x.y() - rho * rho;
+    });
+    // In the meridian plane the half kept has its offset from the centre line within 90° of
+    // the direction φ0 + π/2; the edges are on the cut, the ends at x = 0.
+    const auto offsets = [&](const Vec3& x) {
+      const double r = std::hypot(x.x(), x.z()), middle = phi0 + 0.5 * pi;
+      const double along = (r - R) * std::cos(middle) + x.y() * std::sin(middle);  // ≥ 0 kept
+      return std::pair{along, std::min(std::abs(along), std::abs(x.x()))};
+    };
+    std::vector<Vec3> flagged;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+      const Vec3& x = cloud.points[i];
+      const auto [along, off] = offsets(x);
+      EXPECT_GE(along, -1e-12);
+      if (cloud.boundary[i]) {
+        EXPECT_LE(off, 1e-12) << x.transpose();
+        flagged.push_back(x);
+      } else {
+        EXPECT_GT(off, 0.5 * s) << x.transpose();
+      }
+    }
+    EXPECT_LE(largest_hole(flagged, rims), 0.6 * s);
   }
-  EXPECT_LE(largest_hole(flagged, rims), 0.6 * s);
 }
 
 TEST(SurfaceShapes, ImplicitBlobsProjectByNewtonAndPointOutward) {
@@ -496,7 +508,7 @@ TEST_F(SurfaceShapeFiles, ShapesReadFromTables) {
   auto [pipe, p2] = read<3>("kind = \"half-pipe\"\narc_angle = 90\n");
   ASSERT_TRUE(pipe) << p2;
   EXPECT_EQ(pipe->describe(),
-            "half pipe of radius 0.25 along an arc of radius 0.75 spanning 90 degrees");
+            "inner half pipe of radius 0.25 along an arc of radius 0.75 spanning 90 degrees");
   auto [blobs, p3] = read<2>(
       "kind = \"implicit-blobs\"\ncenters = [[0, 0], [1, 0]]\n"
       "radii = [0.5, 0.5]\nlevel = 0.3\n");
@@ -555,10 +567,14 @@ TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
   EXPECT_NE(p8.find("surface.shape.level: expected a number in (0, 1), found the number 1.5"),
             std::string::npos)
       << p8;
-  auto [pipe, p9] = read<3>("kind = \"half-pipe\"\npipe_radius = 1\narc_angle = 400\n");
+  auto [pipe, p9] =
+      read<3>("kind = \"half-pipe\"\npipe_radius = 1\narc_angle = 400\nside = \"left\"\n");
   EXPECT_NE(p9.find("surface.shape.arc_angle: expected a number in (0, 360)"), std::string::npos)
       << p9;
   EXPECT_NE(p9.find("surface.shape.pipe_radius: expected pipe_radius < arc_radius"),
+            std::string::npos)
+      << p9;
+  EXPECT_NE(p9.find("surface.shape.side: expected one of \"inner\", \"outer\" or \"upper\", found the string \"left\""),
             std::string::npos)
       << p9;
   auto [no_file, p10] = read<3>("kind = \"mesh\"\nfile = \"nowhere.stl\"\n");

@@ -98,7 +98,11 @@ SurfaceShapePtr<D> read_half_pipe(ParameterReader& in, const std::string&) {
       in.fail("pipe_radius", "expected pipe_radius < arc_radius");
       pipe = 0.5 * arc;
     }
-    return make_half_pipe_shape(pipe, arc, angle * kDegree);
+    const std::string side = in.choice("side", {"inner", "outer", "upper"}, "inner");
+    return make_half_pipe_shape(pipe, arc, angle * kDegree,
+                                side == "outer"   ? HalfPipeSide::outer
+                                : side == "upper" ? HalfPipeSide::upper
+                                                  : HalfPipeSide::inner);
   } else {
     return nullptr;  // not registered in 2D
   }

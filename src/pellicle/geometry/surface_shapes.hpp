@@ -25,9 +25,14 @@ SurfaceShapePtr<D> make_ellipsoid_shape(const Vec<D>& center, const Vec<D>& semi
 //! major and a the minor radius; error measure eq 15.
 SurfaceShapePtr<3> make_torus_shape(const Vec3& center, double major, double minor);
 
+//! Which lengthwise half of the tube a half pipe keeps: the one facing the arc's centre, the
+//! one facing away from it, or the y ≥ 0 one.
+enum class HalfPipeSide { inner, outer, upper };
+
 //! The half pipe of §4.2.2: a tube of radius `pipe_radius` about the arc x = R cos θ,
-//! z = R sin θ (R = `arc_radius`, |θ| ≤ `arc_angle`/2, radians), only its y ≥ 0 half.
-SurfaceShapePtr<3> make_half_pipe_shape(double pipe_radius, double arc_radius, double arc_angle);
+//! z = R sin θ (R = `arc_radius`, |θ| ≤ `arc_angle`/2, radians), one half of it.
+SurfaceShapePtr<3> make_half_pipe_shape(double pipe_radius, double arc_radius, double arc_angle,
+                                        HalfPipeSide side = HalfPipeSide::inner);
 
 //! The level set Σ_k exp(−|x − c_k|²/r_k²) = level, 0 < level < 1 (each centre inside).
 template <int D>

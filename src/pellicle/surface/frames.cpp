@@ -100,6 +100,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
     Vec<D> boundary_normal = Vec<D>::Zero();
     const Vec<D> x = cloud.position[i];
     bool done = false;
+    bool at_corner = false;
     if constexpr (D == 3) {
       int boundary_used = 0;
       const Mat3 mb =
@@ -132,6 +133,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
           inward += cloud.position[nb.index[k]] - x;
         inward -= inward.dot(normal) * normal;
         boundary_normal = -inward.normalized();
+        at_corner = true;
       }
     }
     if (keep_side && normal.dot(old.col(D - 1)) < 0.0) normal = -normal;  // eq 5
@@ -141,6 +143,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
       for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) towards += cloud.position[nb.index[k]] - x;
       if (boundary_normal.dot(towards) > 0.0) boundary_normal = -boundary_normal;
       cloud.boundary_normal[i] = boundary_normal;
+      cloud.corner[i] = at_corner ? 1 : 0;
     }
     Vec<D> hint = old.col(0);
     if (cloud.boundary[i] && D == 3) hint = boundary_normal;

@@ -1,6 +1,10 @@
 #include "pellicle/surface/gfdm.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
+
+#include <Eigen/Geometry>
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/loop_failure.hpp"
@@ -16,6 +20,50 @@ namespace {
                            " neighbours): " + describe(why) +
                            "; its second-order GFDM stencil is undefined (raise h or refine "
                            "the cloud there)");
+}
+
+//! Δ_T at boundary point i with zero normal flux, ν · ∇_M u = 0, imposed exactly: the fit in
+//! the tangent frame (ν, n × ν) has no slope along ν; at a corner the flux through both
+//! edges is zero, so it has no slope at all (local_fit.hpp). Its centre coefficient must be
+//! negative, or implicit diffusion amplifies there (the row 1/Δt − α c_ii changes sign once
+//! α Δt c_ii > 1). One-sided neighbourhoods under the narrow weight can give c_ii > 0, so
+//! such a fit is redone with the broad weight, and then, for a point where the boundary
+//! turns too gently to be recognised as a corner, as a corner (docs/theory/surface-gfdm.md).
+//! When every fit leaves c_ii ≥ 0 the last one is stored (SparseSystem::solve refuses a
+//! row that such a stencil makes non-positive).
+template <int D>
+FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>* offsets,
+                              int count, double h, const GfdmOptions& options,
+                              const FitTargets<D, 1>& laplacian, double* coefficients) {
+  constexpr int T = D - 1;
+  Eigen::Matrix<double, D, T> along = cloud.frame[i].template leftCols<T>();
+  if constexpr (D == 3) {
+    const Vec3 n = cloud.normal(i);
+    const Vec3 nu = cloud.boundary_normal[i];
+    const Vec3 across = (nu - nu.dot(n) * n).normalized();
+    along.col(0) = across;
+    along.col(1) = n.cross(across);
+  }
+  FitCoefficients<D, 1> c;
+  FitStatus status = FitStatus::ok;
+  // One fit with `flat` slopes fixed; true when it is usable (c_ii < 0; row 0: the point).
+  const auto stable_fit = [&](int flat, double exponent) {
+    status = flat == 1
+                 ? fit_coefficients<D, 1, 1>(offsets, count, along, h, exponent, laplacian, c)
+                 : fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, c);
+    return status == FitStatus::ok && c(0, 0) < 0.0;
+  };
+  const double narrow = options.weight_exponent, broad = kBroadWeightExponent;
+  using Attempt = std::pair<int, double>;  // (flat slopes, weight exponent)
+  const std::array<Attempt, 3> order = cloud.corner[i]
+                                           ? std::array<Attempt, 3>{{{T, narrow}, {T, broad}}}
+                                           : std::array<Attempt, 3>{{{1, narrow}, {1, broad}, {T, broad}}};
+  const int tries = cloud.corner[i] ? 2 : 3;
+  for (int k = 0; k < tries && !stable_fit(order[k].first, order[k].second); ++k) {
+  }
+  if (status == FitStatus::ok)
+    for (int k = 0; k < count; ++k) coefficients[k] = c(k, 0);
+  return status;
 }
 
 }  // namespace
@@ -47,8 +95,13 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     b(1 + T, T) = 2.0 / (h * h);
     if constexpr (T == 2) b(5, T) = 2.0 / (h * h);
     FitCoefficients<D, T + 1> c;
-    const FitStatus status =
+    FitStatus status =
         fit_coefficients<D, T + 1>(offsets, count, tangents, h, options.weight_exponent, b, c);
+    // A Laplacian whose centre coefficient is not negative (row 0: the point itself) would
+    // make implicit diffusion amplify there; an uneven, sparse neighbourhood under the
+    // narrow weight can give one. The broad weight spreads the fit over the neighbourhood.
+    if (status == FitStatus::ok && c(0, T) >= 0.0)
+      status = fit_coefficients<D, T + 1>(offsets, count, tangents, h, kBroadWeightExponent, b, c);
     if (status != FitStatus::ok) {
       failure.record(i, static_cast<int>(status));
       continue;
@@ -61,18 +114,10 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
       st.zero_flux_laplacian[slot] = c(k, T);
     }
     if (!cloud.boundary[i]) continue;
-    // h ν · ∇ of the monomials at the centre: ν's tangent components on the s_k entries.
-    const Eigen::Matrix<double, T, 1> nu = tangents.transpose() * cloud.boundary_normal[i];
-    FitCondition<D> zero_flux = FitCondition<D>::Zero();
-    for (int t = 0; t < T; ++t) zero_flux(1 + t) = nu[t];
-    FitTargets<D, 1> laplacian = b.template rightCols<1>();
-    FitCoefficients<D, 1> cz;
-    if (fit_coefficients<D, 1>(offsets, count, tangents, h, options.weight_exponent, laplacian, cz,
-                               &zero_flux) != FitStatus::ok) {
-      failure.record(i, static_cast<int>(FitStatus::degenerate));
-      continue;
-    }
-    for (int k = 0; k < count; ++k) st.zero_flux_laplacian[nb.begin(i) + k] = cz(k, 0);
+    const FitStatus zero_flux =
+        zero_flux_laplacian<D>(cloud, i, offsets, count, h, options, b.template rightCols<1>(),
+                               st.zero_flux_laplacian.data() + nb.begin(i));
+    if (zero_flux != FitStatus::ok) failure.record(i, static_cast<int>(zero_flux));
   }
   if (failure.failed())
     unfit(failure.index(), nb.count(failure.index()), static_cast<FitStatus>(failure.detail()));

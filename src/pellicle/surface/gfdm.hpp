@@ -21,16 +21,20 @@ struct GfdmOptions {
   double weight_exponent = 8.0;
 };
 
+//! The weight a zero-flux boundary fit falls back to when the narrow one leaves its centre
+//! coefficient non-negative (gfdm.cpp).
+constexpr double kBroadWeightExponent = 2.0;
+
 //! Stencil coefficients aligned with the neighbour lists they were built on: entry k of
 //! point i's list holds the coefficients of u_j, j = index[k].
 template <int D>
 struct SurfaceStencils {
   std::vector<Vec<D>> gradient;   //!< (c^{M,x}, c^{M,y}, c^{M,z}) of eqs 20–21
   std::vector<double> laplacian;  //!< c^{Δ_M} of eq 25
-  //! At boundary points: Δ_M of the fit that also has zero normal flux, ν · ∇_M u = 0, at
-  //! the point (the condition enters the least squares as one more datum, local_fit.hpp).
-  //! A PDE row with it keeps its time-derivative diagonal where a row ν · ∇_M u = 0 would
-  //! replace it, and stays diagonally dominant. Elsewhere a copy of `laplacian`.
+  //! At boundary points: Δ_M of the fit that has zero normal flux, ν · ∇_M u = 0, at the
+  //! point (no slope along ν; at a corner no slope at all, gfdm.cpp). A PDE row with it
+  //! keeps its time-derivative diagonal where a row ν · ∇_M u = 0 would replace it.
+  //! Elsewhere a copy of `laplacian`.
   std::vector<double> zero_flux_laplacian;
 };
 

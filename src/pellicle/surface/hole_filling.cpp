@@ -30,6 +30,9 @@ struct Candidate {
   double radius;           //!< circumradius, or half the gap
   double h;                //!< mean smoothing length of the simplex's points
   bool boundary;
+  //! An interior point that sits on a boundary gap (added near the boundary before the gap
+  //! grew into a hole) and becomes the gap's boundary point, moved to `position`; else −1.
+  int promotes = -1;
 };
 
 //! A circumsphere counts as a hole only if it holds no point of the cloud: the triangle is
@@ -163,8 +166,23 @@ void boundary_candidates(const PointCloud<3>& cloud, const NeighbourSearch<3>& s
     for (int k : found) between = between || (cloud.boundary[k] && k != v[0] && k != v[1]);
     if (between) continue;
     const Vec3 position = boundary_midpoint<3>(cloud, search, v[0], v[1], weight_exponent);
-    if (!nothing_within(cloud, search, position, o.r_min * h, nullptr, 0)) continue;
+    // Points within r_min h of the new one: none, or an interior point that takes its place.
+    search.around(cloud, position, o.r_min * h, found);
+    int occupant = -1;
+    bool taken = false;
+    double nearest_distance = o.r_min * h;
+    for (int k : found) {
+      const double r = (cloud.position[k] - position).norm();
+      if (r >= o.r_min * h) continue;
+      taken = taken || cloud.boundary[k];
+      if (r < nearest_distance) {
+        occupant = k;
+        nearest_distance = r;
+      }
+    }
+    if (taken) continue;
     Candidate<3> c;
+    c.promotes = occupant;
     c.key = {v[0], v[1], -2};
     c.position = position;
     c.normal = (cloud.normal(v[0]) + cloud.normal(v[1])).normalized();
@@ -293,15 +311,25 @@ void fill_holes(PointCloud<D>& cloud, NeighbourSearch<D>& search, const Manageme
                     frame_with_normal<D>(cloud.frame[c.key[0]], c.normal, c.boundary_normal), c.h};
     }
     report.widened_fits += interpolate_carried(cloud, search, targets, weight_exponent, values);
+    long promoted = 0;
     for (std::size_t q = 0; q < kept.size(); ++q) {
       const Candidate<D>& c = all[kept[q]];
-      const std::size_t i = cloud.add_point(c.position, c.h, c.boundary);
+      std::size_t i;
+      if (c.promotes >= 0) {
+        i = static_cast<std::size_t>(c.promotes);
+        cloud.position[i] = c.position;
+        cloud.boundary[i] = 1;
+        ++promoted;
+      } else {
+        i = cloud.add_point(c.position, c.h, c.boundary);
+      }
       store_carried(values, q, cloud, i);
       if (!(cloud.smoothing_length[i] > 0.0)) cloud.smoothing_length[i] = c.h;
       cloud.frame[i] = targets[q].frame;
       cloud.boundary_normal[i] = c.boundary_normal;
     }
-    report.added += static_cast<long>(kept.size());
+    report.added += static_cast<long>(kept.size()) - promoted;
+    report.promoted += promoted;
     report.fill_passes = pass + 1;
     first = static_cast<std::size_t>(n);
   }

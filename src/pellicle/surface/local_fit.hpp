@@ -34,15 +34,10 @@ Eigen::Matrix<double, 1, kMonomials<D>> monomials(const Eigen::Matrix<double, D 
 //! b: one column per functional, its values on the monomials (e.g. ∂/∂s_1: (0, 1/h, 0, …)).
 template <int D, int M>
 using FitTargets = Eigen::Matrix<double, kMonomials<D>, M>;
-//! One row per neighbour (and one for an extra condition), one column per functional.
+//! One row per neighbour, one column per functional.
 template <int D, int M>
 using FitCoefficients =
-    Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::ColMajor, kMaxStencilPoints + 1, M>;
-//! A linear condition on the fitted quadratic at the centre, as a row over the monomials
-//! (e.g. h ν · ∇ for a prescribed normal flux).
-template <int D>
-using FitCondition = Eigen::Matrix<double, 1, kMonomials<D>>;
-
+    Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::ColMajor, kMaxStencilPoints, M>;
 enum class FitStatus { ok, too_few, too_many, degenerate };
 
 //! Explains a failed fit in words for error messages.
@@ -61,38 +56,41 @@ inline const char* describe(FitStatus s) {
 
 //! `offsets[k]` = x_k − centre. Neighbours are projected along the normal onto the tangent
 //! plane spanned by `tangents` (§4.1.1, Fig. 12). The solution is c = W Q R^{-T} b, with
-//! A = W M = Q R (M the monomials at the neighbours, W their Gaussian weights). With a
-//! `condition`, it is one more datum of weight 1 (its value, the condition's right-hand
-//! side, then multiplies the last coefficient, row `count` of c).
-template <int D, int M>
+//! A = W M = Q R (M the monomials at the neighbours, W their Gaussian weights). With
+//! `FlatSlopes` = m > 0 the fitted quadratic has zero slope along the first m tangents at
+//! the centre, exactly: their linear monomials are left out of M (and b must not ask for
+//! those slopes). That is how a zero-flux boundary enters a fit (gfdm.cpp).
+template <int D, int M, int FlatSlopes = 0>
 FitStatus fit_coefficients(const Vec<D>* offsets, int count,
                            const Eigen::Matrix<double, D, D - 1>& tangents, double h,
                            double weight_exponent, const FitTargets<D, M>& b,
-                           FitCoefficients<D, M>& c, const FitCondition<D>* condition = nullptr) {
-  constexpr int P = kMonomials<D>;
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, P, Eigen::ColMajor, kMaxStencilPoints + 1, P>;
+                           FitCoefficients<D, M>& c) {
+  static_assert(FlatSlopes >= 0 && FlatSlopes < D);
+  // The constant, the free slopes, the quadratics.
+  constexpr int kept = kMonomials<D> - FlatSlopes;
+  using Block = Eigen::Matrix<double, Eigen::Dynamic, kept, Eigen::ColMajor, kMaxStencilPoints, kept>;
   if (count > kMaxStencilPoints) return FitStatus::too_many;
-  if (count < P) return FitStatus::too_few;
-  const int rows = count + (condition ? 1 : 0);
-  Block a(rows, P);
-  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxStencilPoints + 1, 1> w(rows);
+  if (count < kept) return FitStatus::too_few;
+  Block a(count, kept);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxStencilPoints, 1> w(count);
   for (int k = 0; k < count; ++k) {
     const Eigen::Matrix<double, D - 1, 1> s = tangents.transpose() * offsets[k] / h;
     w[k] = gaussian_weight(offsets[k].squaredNorm(), h, weight_exponent);
-    a.row(k) = w[k] * monomials<D>(s);
+    const auto m = monomials<D>(s);  // the flat slopes are m[1 … FlatSlopes]
+    a(k, 0) = w[k] * m[0];
+    a.row(k).template tail<kept - 1>() = w[k] * m.template tail<kept - 1>();
   }
-  if (condition) {
-    w[count] = 1.0;
-    a.row(count) = *condition;
-  }
+  Eigen::Matrix<double, kept, M> target;
+  target.row(0) = b.row(0);
+  target.template bottomRows<kept - 1>() = b.template bottomRows<kept - 1>();
   Eigen::HouseholderQR<Block> qr(a);
   const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
   if (diagonal.minCoeff() < 1e-9 * diagonal.maxCoeff()) return FitStatus::degenerate;
-  const auto r = qr.matrixQR().template topRows<P>().template triangularView<Eigen::Upper>();
-  c.setZero(rows, M);
-  c.template topRows<P>() = r.transpose().solve(b);
+  const auto r = qr.matrixQR().template topRows<kept>().template triangularView<Eigen::Upper>();
+  c.setZero(count, M);
+  c.template topRows<kept>() = r.transpose().solve(target);
   c.applyOnTheLeft(qr.householderQ());
-  for (int k = 0; k < rows; ++k) c.row(k) *= w[k];
+  for (int k = 0; k < count; ++k) c.row(k) *= w[k];
   return FitStatus::ok;
 }
 

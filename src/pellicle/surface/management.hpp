@@ -60,10 +60,12 @@ struct ManagementReport {
   long added = 0;         //!< points created in holes (appended after the other points)
   long merged = 0;        //!< pairs merged into one point
   long removed = 0;       //!< interior points dropped next to boundary points
+  //! Interior points on a boundary gap made the gap's boundary point (hole_filling.cpp).
+  long promoted = 0;
   int fill_passes = 0;    //!< passes of the hole filling that added points
   bool filled = true;     //!< false when max_fill_passes ended the filling with holes left
   long widened_fits = 0;  //!< new or merged points whose fit needed more than h (MlsFit)
-  bool changed() const { return added + merged + removed > 0; }
+  bool changed() const { return added + merged + removed + promoted > 0; }
 };
 
 //! Merge close points, then fill holes (the filling never puts points closer than r_min h,

@@ -21,6 +21,7 @@ std::size_t PointCloud<D>::add_point(const Vec<D>& x, double h, bool on_boundary
   frame.push_back(Mat<D>::Identity());
   boundary.push_back(on_boundary ? 1 : 0);
   boundary_normal.push_back(Vec<D>::Zero());
+  corner.push_back(0);
   velocity.push_back(Vec<D>::Zero());
   previous_velocity.push_back(Vec<D>::Zero());
   has_previous_velocity.push_back(0);
@@ -37,6 +38,7 @@ void PointCloud<D>::remove_points(const std::vector<std::uint8_t>& remove) {
   compact(frame, remove);
   compact(boundary, remove);
   compact(boundary_normal, remove);
+  compact(corner, remove);
   compact(velocity, remove);
   compact(previous_velocity, remove);
   compact(has_previous_velocity, remove);

@@ -26,6 +26,9 @@ class PointCloud {
   //! ν at boundary points: normal to the boundary, in the manifold's tangent space, pointing
   //! out of the manifold (§3.2); zero elsewhere.
   std::vector<Vec<D>> boundary_normal;
+  //! 1 at boundary points where the boundary turns (its boundary neighbours spread in two
+  //! directions); set with the frames (frames.hpp).
+  std::vector<std::uint8_t> corner;
   std::vector<Vec<D>> velocity;  //!< v^(n)
   //! v^(n−1), for the second-order movement (eq 3); valid where has_previous_velocity.
   std::vector<Vec<D>> previous_velocity;

@@ -43,6 +43,17 @@ LinearSolveReport run(Solver& solver, const SparseSystem::Solver::Matrix& a,
   }
   return report;
 }
+
+[[noreturn]] void unstable_row(long i, double diagonal) {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "row %ld of the implicit step has the diagonal %.3g: the step would amplify the "
+                "value at point %ld instead of damping it (its Laplacian stencil's centre "
+                "coefficient is positive and large: a sparse, one-sided neighbourhood); refine "
+                "the cloud there or lower the time step",
+                i, diagonal, i);
+  throw NumericalError({0.0, 0, "surface", i}, text);
+}
 }  // namespace
 
 SparseSystem::SparseSystem() : solver_(std::make_unique<Solver>()) {
@@ -57,9 +68,11 @@ LinearSolveReport SparseSystem::solve(const NeighbourLists& lists, const std::ve
   auto& s = *solver_;
   s.triplets.clear();
   s.triplets.reserve(lists.index.size());
-  for (long i = 0; i < n; ++i)
+  for (long i = 0; i < n; ++i) {
+    if (!(values[lists.begin(i)] > 0.0)) unstable_row(i, values[lists.begin(i)]);
     for (long k = lists.begin(i); k < lists.end(i); ++k)
       if (values[k] != 0.0) s.triplets.emplace_back(i, lists.index[k], values[k]);
+  }
   s.matrix.resize(n, n);
   s.matrix.setFromTriplets(s.triplets.begin(), s.triplets.end());
   if (options.preconditioner == Preconditioner::jacobi)

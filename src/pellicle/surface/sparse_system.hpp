@@ -38,7 +38,8 @@ class SparseSystem {
 
   //! Coefficients aligned with `lists` (filled by the caller, then `solve`).
   std::vector<double> values;
-  //! Solve A x = rhs, starting from x. Throws NumericalError when BiCGSTAB does not reach the
+  //! Solve A x = rhs, starting from x. Throws NumericalError when a row's diagonal (the
+  //! point itself, first in its list) is not positive, or BiCGSTAB does not reach the
   //! tolerance.
   LinearSolveReport solve(const NeighbourLists& lists, const std::vector<double>& rhs,
                           std::vector<double>& x, const LinearSolverOptions& options);
