@@ -27,14 +27,14 @@ def scalar(fields, name, path):
     return data if data.ndim == 1 else np.linalg.norm(data, axis=1)
 
 
-def plot(snapshots, field, elevation, azimuth, out):
-    """Draw the panels with one colour scale for all of them."""
+def plot(snapshots, field, elevation, azimuth, per_panel, out):
+    """Draw the panels with one colour scale for all of them, or one each (per_panel)."""
     frames = []
     for time, path in snapshots:
         points, fields = read_vtp(path)
         frames.append((time, points, scalar(fields, field, path)))
-    low = min(v.min() for _, _, v in frames)
-    high = max(v.max() for _, _, v in frames)
+    low = min(np.nanmin(v) for _, _, v in frames)
+    high = max(np.nanmax(v) for _, _, v in frames)
     columns = min(3, len(frames))
     rows = -(-len(frames) // columns)
     fig = plt.figure(figsize=(4.5 * columns, 4.2 * rows))
@@ -43,8 +43,11 @@ def plot(snapshots, field, elevation, azimuth, out):
     half = 0.5 * (every.max(axis=0) - every.min(axis=0)).max()
     for k, (time, points, values) in enumerate(frames):
         ax = fig.add_subplot(rows, columns, k + 1, projection="3d")
+        scale = (np.nanmin(values), np.nanmax(values)) if per_panel else (low, high)
         drawn = ax.scatter(points[:, 0], points[:, 1], points[:, 2], c=values, s=2,
-                           cmap="viridis", vmin=low, vmax=high, depthshade=False)
+                           cmap="viridis", vmin=scale[0], vmax=scale[1], depthshade=False)
+        if per_panel:
+            fig.colorbar(drawn, ax=ax, shrink=0.6, pad=0.12, label=field)
         for axis, set_limits in enumerate((ax.set_xlim, ax.set_ylim, ax.set_zlim)):
             set_limits(centre[axis] - half, centre[axis] + half)
         ax.set_box_aspect((1, 1, 1))
@@ -53,7 +56,8 @@ def plot(snapshots, field, elevation, azimuth, out):
         ax.set_xlabel("x")
         ax.set_ylabel("y")
         ax.set_zlabel("z")
-    fig.colorbar(drawn, ax=fig.axes, shrink=0.6, label=field)
+    if not per_panel:
+        fig.colorbar(drawn, ax=fig.axes, shrink=0.6, label=field)
     fig.savefig(out, dpi=110)
     plt.close(fig)
 
@@ -70,6 +74,8 @@ def main():
                         help=f"position in surface.pvd, 'last' (default) or 'all' (up to {MAX_PANELS})")
     parser.add_argument("--elevation", type=float, default=25.0, help="view elevation, degrees")
     parser.add_argument("--azimuth", type=float, default=-60.0, help="view azimuth, degrees")
+    parser.add_argument("--scale", choices=("shared", "panel"), default="shared",
+                        help="one colour scale for all panels (default) or one per panel")
     parser.add_argument("--out", metavar="PNG", help="output (default: <dir>/surface_<field>.png)")
     args = parser.parse_args()
     path = os.path.join(args.input, "surface.pvd") if os.path.isdir(args.input) else args.input
@@ -81,7 +87,7 @@ def main():
         else:
             snapshots = select_snapshots(read_pvd(path), args.snapshot, path)
         out = args.out or os.path.join(os.path.dirname(path), f"surface_{args.field}.png")
-        plot(snapshots, args.field, args.elevation, args.azimuth, out)
+        plot(snapshots, args.field, args.elevation, args.azimuth, args.scale == "panel", out)
     except InputError as err:
         parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
     except OSError as err:

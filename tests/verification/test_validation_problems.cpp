@@ -26,6 +26,7 @@
 //                    faster than h²; the circumcentre's error second order
 //   surface-cdr-sphere §4.2.1: Tables 2 and 3 (errors within 1.5×, orders within 0.2)
 //   surface-wave-sphere §4.2.4: Table 4 (same tolerances)
+//   surface-half-pipe §4.2.2: ∫ φ dA kept within 1 % while the half pipe twists to t = 2
 //   laplace-spectrum  −Δ_M eigenvalues on the sphere (l(l+1)) and a torus within 1%
 #include <gtest/gtest.h>
 
@@ -113,6 +114,9 @@ TEST(Validation, SurfaceCdrSphere) {
 }
 TEST(Validation, SurfaceWaveSphere) {
   expect_all_checks_pass("surface-wave-sphere");
+}
+TEST(Validation, SurfaceHalfPipe) {
+  expect_all_checks_pass("surface-half-pipe");
 }
 TEST(Validation, LaplaceSpectrum) {
   expect_all_checks_pass("laplace-spectrum");

@@ -1,8 +1,8 @@
 #include "pellicle/surface/gfdm.hpp"
 
 #include <algorithm>
-#include <array>
-#include <utility>
+#include <limits>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -14,6 +14,15 @@ namespace pellicle {
 
 namespace {
 
+//! The weight exponents a stencil may use, narrowest first: the case's, then 4 and 2 where
+//! they are broader.
+std::vector<double> weight_ladder(const GfdmOptions& options) {
+  std::vector<double> ladder{options.weight_exponent};
+  for (const double c : {4.0, kBroadWeightExponent})
+    if (c < ladder.back()) ladder.push_back(c);
+  return ladder;
+}
+
 [[noreturn]] void unfit(std::size_t i, int count, FitStatus why) {
   throw NumericalError({0.0, 0, "surface", static_cast<long>(i)},
                        "point " + std::to_string(i) + " (" + std::to_string(count) +
@@ -22,15 +31,47 @@ namespace {
                            "the cloud there)");
 }
 
+//! How far a Laplacian stencil (column `col` of c, row 0 the point itself) is from a row of
+//! an M-matrix: Σ_{j≠i} max(0, −c_j) / |c_i|, infinite when c_i is not negative.
+template <int D, int M>
+double negative_share(const FitCoefficients<D, M>& c, int count, int col) {
+  if (!(c(0, col) < 0.0)) return std::numeric_limits<double>::infinity();
+  double negative = 0.0;
+  for (int k = 1; k < count; ++k) negative += std::max(0.0, -c(k, col));
+  return negative / -c(0, col);
+}
+
+//! Fits `attempt(k, c)` for k = 0, 1, … until one's Laplacian (column `col`) has a negative
+//! share of at most kMaxNegativeShare; otherwise keeps the one with the smallest share.
+template <int D, int M, class Attempt>
+FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D, M>& c,
+                             Attempt attempt) {
+  FitCoefficients<D, M> trial;
+  FitStatus status = FitStatus::degenerate;
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < attempts; ++k) {
+    const FitStatus s = attempt(k, trial);
+    if (s != FitStatus::ok) {
+      if (status != FitStatus::ok) status = s;
+      continue;
+    }
+    const double share = negative_share<D, M>(trial, count, col);
+    if (status != FitStatus::ok || share < best) {
+      c = trial;
+      best = share;
+      status = FitStatus::ok;
+    }
+    if (share <= kMaxNegativeShare) break;
+  }
+  return status;
+}
+
 //! Δ_T at boundary point i with zero normal flux, ν · ∇_M u = 0, imposed exactly: the fit in
 //! the tangent frame (ν, n × ν) has no slope along ν; at a corner the flux through both
-//! edges is zero, so it has no slope at all (local_fit.hpp). Its centre coefficient must be
-//! negative, or implicit diffusion amplifies there (the row 1/Δt − α c_ii changes sign once
-//! α Δt c_ii > 1). One-sided neighbourhoods under the narrow weight can give c_ii > 0, so
-//! such a fit is redone with the broad weight, and then, for a point where the boundary
-//! turns too gently to be recognised as a corner, as a corner (docs/theory/surface-gfdm.md).
-//! When every fit leaves c_ii ≥ 0 the last one is stored (SparseSystem::solve refuses a
-//! row that such a stencil makes non-positive).
+//! edges is zero, so it has no slope at all (local_fit.hpp). Of the weights, the narrowest
+//! that gives a stable row (negative_share); at a point where the boundary turns too gently
+//! to be recognised as a corner, the corner's fit as the last resort
+//! (docs/theory/surface-gfdm.md, "Boundary points").
 template <int D>
 FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>* offsets,
                               int count, double h, const GfdmOptions& options,
@@ -44,23 +85,17 @@ FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const V
     along.col(0) = across;
     along.col(1) = n.cross(across);
   }
+  const bool corner = cloud.corner[i] != 0;
+  const auto ladder = weight_ladder(options);
+  const int attempts = static_cast<int>(ladder.size()) + (corner ? 0 : 1);
   FitCoefficients<D, 1> c;
-  FitStatus status = FitStatus::ok;
-  // One fit with `flat` slopes fixed; true when it is usable (c_ii < 0; row 0: the point).
-  const auto stable_fit = [&](int flat, double exponent) {
-    status = flat == 1
-                 ? fit_coefficients<D, 1, 1>(offsets, count, along, h, exponent, laplacian, c)
-                 : fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, c);
-    return status == FitStatus::ok && c(0, 0) < 0.0;
-  };
-  const double narrow = options.weight_exponent, broad = kBroadWeightExponent;
-  using Attempt = std::pair<int, double>;  // (flat slopes, weight exponent)
-  const std::array<Attempt, 3> order = cloud.corner[i]
-                                           ? std::array<Attempt, 3>{{{T, narrow}, {T, broad}}}
-                                           : std::array<Attempt, 3>{{{1, narrow}, {1, broad}, {T, broad}}};
-  const int tries = cloud.corner[i] ? 2 : 3;
-  for (int k = 0; k < tries && !stable_fit(order[k].first, order[k].second); ++k) {
-  }
+  const FitStatus status =
+      least_negative_fit<D, 1>(attempts, count, 0, c, [&](int k, FitCoefficients<D, 1>& out) {
+        const bool flat_all = corner || k == static_cast<int>(ladder.size());
+        const double exponent = ladder[std::min<std::size_t>(k, ladder.size() - 1)];
+        return flat_all ? fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, out)
+                        : fit_coefficients<D, 1, 1>(offsets, count, along, h, exponent, laplacian, out);
+      });
   if (status == FitStatus::ok)
     for (int k = 0; k < count; ++k) coefficients[k] = c(k, 0);
   return status;
@@ -94,14 +129,16 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     for (int t = 0; t < T; ++t) b(1 + t, t) = 1.0 / h;
     b(1 + T, T) = 2.0 / (h * h);
     if constexpr (T == 2) b(5, T) = 2.0 / (h * h);
+    // Interior points: of the weights, the narrowest whose Laplacian makes a stable implicit
+    // row (negative_share; docs/theory/surface-gfdm.md). Boundary points keep the narrow
+    // one: their rows use the zero-flux Laplacian below.
+    const auto ladder = weight_ladder(options);
     FitCoefficients<D, T + 1> c;
-    FitStatus status =
-        fit_coefficients<D, T + 1>(offsets, count, tangents, h, options.weight_exponent, b, c);
-    // A Laplacian whose centre coefficient is not negative (row 0: the point itself) would
-    // make implicit diffusion amplify there; an uneven, sparse neighbourhood under the
-    // narrow weight can give one. The broad weight spreads the fit over the neighbourhood.
-    if (status == FitStatus::ok && c(0, T) >= 0.0)
-      status = fit_coefficients<D, T + 1>(offsets, count, tangents, h, kBroadWeightExponent, b, c);
+    const FitStatus status = least_negative_fit<D, T + 1>(
+        cloud.boundary[i] ? 1 : static_cast<int>(ladder.size()), count, T, c,
+        [&](int k, FitCoefficients<D, T + 1>& out) {
+          return fit_coefficients<D, T + 1>(offsets, count, tangents, h, ladder[k], b, out);
+        });
     if (status != FitStatus::ok) {
       failure.record(i, static_cast<int>(status));
       continue;

@@ -21,9 +21,12 @@ struct GfdmOptions {
   double weight_exponent = 8.0;
 };
 
-//! The weight a zero-flux boundary fit falls back to when the narrow one leaves its centre
-//! coefficient non-negative (gfdm.cpp).
+//! The broadest weight a stencil falls back to (gfdm.cpp): a Laplacian whose negative
+//! off-diagonal coefficients outweigh kMaxNegativeShare of its (negative) centre
+//! coefficient, or whose centre coefficient is not negative, is fitted again under broader
+//! weights (4, then this), and the least negative one kept.
 constexpr double kBroadWeightExponent = 2.0;
+constexpr double kMaxNegativeShare = 0.5;
 
 //! Stencil coefficients aligned with the neighbour lists they were built on: entry k of
 //! point i's list holds the coefficients of u_j, j = index[k].

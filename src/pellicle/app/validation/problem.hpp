@@ -69,6 +69,7 @@ Outcome offset_disks(Resolution resolution);
 Outcome ball_and_net(Resolution resolution);
 Outcome surface_cdr_sphere(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
+Outcome surface_half_pipe(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);
 Outcome surface_movement(Resolution resolution);
 Outcome surface_point_addition(Resolution resolution);

@@ -54,6 +54,9 @@ const std::vector<Problem>& problems() {
        "Suchde & Kuhnert §4.2.1", &surface_cdr_sphere},
       {"surface-wave-sphere", "Wave equation on an expanding sphere: Table 4",
        "Suchde & Kuhnert §4.2.4", &surface_wave_sphere},
+      {"surface-half-pipe",
+       "Diffusion on a deforming half pipe: conservation of the integral of phi (Figure 13)",
+       "Suchde & Kuhnert §4.2.2", &surface_half_pipe},
       {"laplace-spectrum", "Laplace-Beltrami eigenvalues of point clouds: sphere and torus",
        "Suchde & Kuhnert §4.1 operators; analytic and separated references", &laplace_spectrum},
   };
