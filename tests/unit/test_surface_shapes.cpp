@@ -240,8 +240,9 @@ TEST(SurfaceShapes, HalfPipeEdgesAndEndsAreTheBoundary) {
     return Vec3((R + rho * std::cos(p)) * std::cos(t), rho * std::sin(p),
                 (R + rho * std::cos(p)) * std::sin(t));
   };
-  const std::pair<HalfPipeSide, double> sides[] = {
-      {HalfPipeSide::inner, 0.5 * pi}, {HalfPipeSide::outer, -0.5 * pi}, {HalfPipeSide::upper, 0.0}};
+  const std::pair<HalfPipeSide, double> sides[] = {{HalfPipeSide::inner, 0.5 * pi},
+                                                   {HalfPipeSide::outer, -0.5 * pi},
+                                                   {HalfPipeSide::upper, 0.0}};
   for (const auto& [side, phi0] : sides) {
     SCOPED_TRACE(phi0);
     const auto pipe = make_half_pipe_shape(rho, R, 2 * half, side);
@@ -574,7 +575,8 @@ TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
   EXPECT_NE(p9.find("surface.shape.pipe_radius: expected pipe_radius < arc_radius"),
             std::string::npos)
       << p9;
-  EXPECT_NE(p9.find("surface.shape.side: expected one of \"inner\", \"outer\" or \"upper\", found the string \"left\""),
+  EXPECT_NE(p9.find("surface.shape.side: expected one of \"inner\", \"outer\" or \"upper\", found "
+                    "the string \"left\""),
             std::string::npos)
       << p9;
   auto [no_file, p10] = read<3>("kind = \"mesh\"\nfile = \"nowhere.stl\"\n");

@@ -25,14 +25,16 @@ class HalfPipeShape final : public SurfaceShape<3> {
       : rho_(pipe_radius),
         radius_(arc_radius),
         half_(0.5 * arc_angle),
-        phi0_(side == HalfPipeSide::inner ? 0.5 * pi : side == HalfPipeSide::outer ? -0.5 * pi : 0.0),
+        phi0_(side == HalfPipeSide::inner   ? 0.5 * pi
+              : side == HalfPipeSide::outer ? -0.5 * pi
+                                            : 0.0),
         side_(side) {
     const int along =
         std::max(2, static_cast<int>(std::ceil(arc_angle * (radius_ + rho_) / (0.3 * rho_))));
     const int around = static_cast<int>(std::ceil(pi / 0.3));
-    carrier_ = parametric_grid(
-        along, around,
-        [this](double u, double v) { return at(-half_ + 2.0 * half_ * u, phi0_ + pi * v); });
+    carrier_ = parametric_grid(along, around, [this](double u, double v) {
+      return at(-half_ + 2.0 * half_ * u, phi0_ + pi * v);
+    });
   }
 
   std::string describe() const override {
@@ -40,9 +42,8 @@ class HalfPipeShape final : public SurfaceShape<3> {
                         : side_ == HalfPipeSide::outer ? "outer"
                                                        : "upper";
     return std::string(which) + " half pipe of radius " + describe_number(rho_) +
-           " along an arc of radius " +
-           describe_number(radius_) + " spanning " + describe_number(2.0 * half_ * 180.0 / pi) +
-           " degrees";
+           " along an arc of radius " + describe_number(radius_) + " spanning " +
+           describe_number(2.0 * half_ * 180.0 / pi) + " degrees";
   }
 
   //! In the meridian plane of x (θ clamped to the arc, which is exact: the distance to

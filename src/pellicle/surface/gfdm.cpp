@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -16,12 +15,15 @@ namespace {
 
 //! The weight exponents a stencil may use, narrowest first: the case's, then 4 and 2 where
 //! they are broader.
-std::vector<double> weight_ladder(const GfdmOptions& options) {
-  std::vector<double> ladder{options.weight_exponent};
-  for (const double c : {4.0, kBroadWeightExponent})
-    if (c < ladder.back()) ladder.push_back(c);
-  return ladder;
-}
+struct WeightLadder {
+  double exponent[3];
+  int size = 0;
+  explicit WeightLadder(const GfdmOptions& options) {
+    exponent[size++] = options.weight_exponent;
+    for (const double c : {4.0, kBroadWeightExponent})
+      if (c < exponent[size - 1]) exponent[size++] = c;
+  }
+};
 
 [[noreturn]] void unfit(std::size_t i, int count, FitStatus why) {
   throw NumericalError({0.0, 0, "surface", static_cast<long>(i)},
@@ -74,7 +76,7 @@ FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D
 //! (docs/theory/surface-gfdm.md, "Boundary points").
 template <int D>
 FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>* offsets,
-                              int count, double h, const GfdmOptions& options,
+                              int count, double h, const WeightLadder& ladder,
                               const FitTargets<D, 1>& laplacian, double* coefficients) {
   constexpr int T = D - 1;
   Eigen::Matrix<double, D, T> along = cloud.frame[i].template leftCols<T>();
@@ -86,15 +88,15 @@ FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const V
     along.col(1) = n.cross(across);
   }
   const bool corner = cloud.corner[i] != 0;
-  const auto ladder = weight_ladder(options);
-  const int attempts = static_cast<int>(ladder.size()) + (corner ? 0 : 1);
+  // Edges: the ladder with one slope fixed, then the corner's fit under the broadest weight.
+  const int attempts = ladder.size + (corner ? 0 : 1);
   FitCoefficients<D, 1> c;
   const FitStatus status =
       least_negative_fit<D, 1>(attempts, count, 0, c, [&](int k, FitCoefficients<D, 1>& out) {
-        const bool flat_all = corner || k == static_cast<int>(ladder.size());
-        const double exponent = ladder[std::min<std::size_t>(k, ladder.size() - 1)];
-        return flat_all ? fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, out)
-                        : fit_coefficients<D, 1, 1>(offsets, count, along, h, exponent, laplacian, out);
+        const double exponent = ladder.exponent[std::min(k, ladder.size - 1)];
+        if (corner || k == ladder.size)
+          return fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, out);
+        return fit_coefficients<D, 1, 1>(offsets, count, along, h, exponent, laplacian, out);
       });
   if (status == FitStatus::ok)
     for (int k = 0; k < count; ++k) coefficients[k] = c(k, 0);
@@ -111,6 +113,7 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
   st.gradient.resize(nb.index.size());
   st.laplacian.resize(nb.index.size());
   st.zero_flux_laplacian.resize(nb.index.size());
+  const WeightLadder ladder(options);
   LoopFailure failure;
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) {
@@ -132,13 +135,13 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     // Interior points: of the weights, the narrowest whose Laplacian makes a stable implicit
     // row (negative_share; docs/theory/surface-gfdm.md). Boundary points keep the narrow
     // one: their rows use the zero-flux Laplacian below.
-    const auto ladder = weight_ladder(options);
     FitCoefficients<D, T + 1> c;
-    const FitStatus status = least_negative_fit<D, T + 1>(
-        cloud.boundary[i] ? 1 : static_cast<int>(ladder.size()), count, T, c,
-        [&](int k, FitCoefficients<D, T + 1>& out) {
-          return fit_coefficients<D, T + 1>(offsets, count, tangents, h, ladder[k], b, out);
-        });
+    const FitStatus status =
+        least_negative_fit<D, T + 1>(cloud.boundary[i] ? 1 : ladder.size, count, T, c,
+                                     [&](int k, FitCoefficients<D, T + 1>& out) {
+                                       return fit_coefficients<D, T + 1>(
+                                           offsets, count, tangents, h, ladder.exponent[k], b, out);
+                                     });
     if (status != FitStatus::ok) {
       failure.record(i, static_cast<int>(status));
       continue;
@@ -152,7 +155,7 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     }
     if (!cloud.boundary[i]) continue;
     const FitStatus zero_flux =
-        zero_flux_laplacian<D>(cloud, i, offsets, count, h, options, b.template rightCols<1>(),
+        zero_flux_laplacian<D>(cloud, i, offsets, count, h, ladder, b.template rightCols<1>(),
                                st.zero_flux_laplacian.data() + nb.begin(i));
     if (zero_flux != FitStatus::ok) failure.record(i, static_cast<int>(zero_flux));
   }

@@ -68,7 +68,8 @@ FitStatus fit_coefficients(const Vec<D>* offsets, int count,
   static_assert(FlatSlopes >= 0 && FlatSlopes < D);
   // The constant, the free slopes, the quadratics.
   constexpr int kept = kMonomials<D> - FlatSlopes;
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, kept, Eigen::ColMajor, kMaxStencilPoints, kept>;
+  using Block =
+      Eigen::Matrix<double, Eigen::Dynamic, kept, Eigen::ColMajor, kMaxStencilPoints, kept>;
   if (count > kMaxStencilPoints) return FitStatus::too_many;
   if (count < kept) return FitStatus::too_few;
   Block a(count, kept);

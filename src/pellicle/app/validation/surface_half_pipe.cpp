@@ -45,10 +45,8 @@ Outcome surface_half_pipe(Resolution resolution) {
   Outcome out;
   std::vector<double> lengths = {0.1};
   if (resolution == Resolution::full) lengths = {0.1, 0.07, 0.05};
-  Series change{"half_pipe_conservation",
-                "Half pipe: relative change of the integral of phi",
-                {"time"},
-                {}};
+  Series change{
+      "half_pipe_conservation", "Half pipe: relative change of the integral of phi", {"time"}, {}};
   Series area{"half_pipe_area", "Half pipe: area", {"time"}, {}};
   std::vector<HalfPipeRun> runs;
   std::vector<double> areas;
@@ -63,7 +61,12 @@ Outcome surface_half_pipe(Resolution resolution) {
     auto& s = *run.simulation;
     const Totals start = totals(s, areas);
     const auto& initial = s.cloud().field(s.pde()->unknown());
-    HalfPipeRun m{h,   run.initial_points, 0, start.area, 0.0, 0.0,
+    HalfPipeRun m{h,
+                  run.initial_points,
+                  0,
+                  start.area,
+                  0.0,
+                  0.0,
                   *std::min_element(initial.begin(), initial.end()),
                   *std::max_element(initial.begin(), initial.end())};
     if (r == 0) {
