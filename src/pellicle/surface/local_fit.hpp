@@ -38,6 +38,7 @@ using FitTargets = Eigen::Matrix<double, kMonomials<D>, M>;
 template <int D, int M>
 using FitCoefficients =
     Eigen::Matrix<double, Eigen::Dynamic, M, Eigen::ColMajor, kMaxStencilPoints, M>;
+
 enum class FitStatus { ok, too_few, too_many, degenerate };
 
 //! Explains a failed fit in words for error messages.
