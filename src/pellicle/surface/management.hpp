@@ -57,9 +57,9 @@ struct ManagementOptions {
 };
 
 struct ManagementReport {
-  long added = 0;         //!< points created in holes (appended after the other points)
-  long merged = 0;        //!< pairs merged into one point
-  long removed = 0;       //!< interior points dropped next to boundary points
+  long added = 0;    //!< points created in holes (appended after the other points)
+  long merged = 0;   //!< pairs merged into one point
+  long removed = 0;  //!< interior points dropped next to boundary points
   //! Interior points on a boundary gap made the gap's boundary point (hole_filling.cpp).
   long promoted = 0;
   int fill_passes = 0;    //!< passes of the hole filling that added points
