@@ -87,15 +87,10 @@ void SurfaceOutputWriter<D>::write_row(const SurfaceSimulation<D>& s) {
   history_ << s.time() << ',' << s.step_count() << ',' << s.cloud().size() << ',' << m.added << ','
            << m.merged << ',' << m.removed << ',' << s.last_solve().iterations << ','
            << s.last_solve().residual;
-  point_areas(s.cloud(), s.neighbours(), areas_);
-  double area = 0.0, total = 0.0;
   const std::vector<double>* phi = s.pde() ? &s.cloud().field(s.pde()->unknown()) : nullptr;
-  for (std::size_t i = 0; i < areas_.size(); ++i) {
-    area += areas_[i];
-    if (phi) total += areas_[i] * (*phi)[i];
-  }
-  history_ << ',' << area;
-  if (phi) history_ << ',' << total;
+  const SurfaceIntegrals totals = integrate(s.cloud(), s.neighbours(), phi, areas_);
+  history_ << ',' << totals.area;
+  if (phi) history_ << ',' << totals.integral;
   if (s.pde() && s.pde()->exact()) {
     const SolutionErrors e = solution_errors(s);
     history_ << ',' << e.relative_l2 << ',' << e.max;

@@ -28,7 +28,23 @@ void point_areas(const PointCloud<D>& cloud, const NeighbourLists& nb, std::vect
   }
 }
 
+template <int D>
+SurfaceIntegrals integrate(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
+                           const std::vector<double>* u, std::vector<double>& areas) {
+  point_areas(cloud, neighbours, areas);
+  SurfaceIntegrals out;
+  for (std::size_t i = 0; i < areas.size(); ++i) {
+    out.area += areas[i];
+    if (u) out.integral += areas[i] * (*u)[i];
+  }
+  return out;
+}
+
 template void point_areas<2>(const PointCloud<2>&, const NeighbourLists&, std::vector<double>&);
 template void point_areas<3>(const PointCloud<3>&, const NeighbourLists&, std::vector<double>&);
+template SurfaceIntegrals integrate<2>(const PointCloud<2>&, const NeighbourLists&,
+                                       const std::vector<double>*, std::vector<double>&);
+template SurfaceIntegrals integrate<3>(const PointCloud<3>&, const NeighbourLists&,
+                                       const std::vector<double>*, std::vector<double>&);
 
 }  // namespace pellicle

@@ -17,4 +17,14 @@ template <int D>
 void point_areas(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
                  std::vector<double>& area);
 
+struct SurfaceIntegrals {
+  double area = 0.0;      //!< Σ_i A_i
+  double integral = 0.0;  //!< Σ_i A_i u_i (0 without u)
+};
+
+//! The area and, with `u`, ∫ u dA (`areas` is scratch for the A_i).
+template <int D>
+SurfaceIntegrals integrate(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
+                           const std::vector<double>* u, std::vector<double>& areas);
+
 }  // namespace pellicle

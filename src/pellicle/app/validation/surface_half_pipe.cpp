@@ -18,19 +18,8 @@ namespace pellicle::validation {
 
 namespace {
 
-struct Totals {
-  double area = 0.0, phi = 0.0;
-};
-
-Totals totals(const SurfaceSimulation<3>& s, std::vector<double>& areas) {
-  point_areas(s.cloud(), s.neighbours(), areas);
-  const std::vector<double>& phi = s.cloud().field(s.pde()->unknown());
-  Totals t;
-  for (std::size_t i = 0; i < areas.size(); ++i) {
-    t.area += areas[i];
-    t.phi += areas[i] * phi[i];
-  }
-  return t;
+SurfaceIntegrals totals(const SurfaceSimulation<3>& s, std::vector<double>& areas) {
+  return integrate(s.cloud(), s.neighbours(), &s.cloud().field(s.pde()->unknown()), areas);
 }
 
 struct HalfPipeRun {
@@ -59,7 +48,7 @@ Outcome surface_half_pipe(Resolution resolution) {
     auto run = builtin_surface<3>("surface_half_pipe.toml",
                                   {setting("surface.smoothing_length", h), "output.monitors={}"});
     auto& s = *run.simulation;
-    const Totals start = totals(s, areas);
+    const SurfaceIntegrals start = totals(s, areas);
     const auto& initial = s.cloud().field(s.pde()->unknown());
     HalfPipeRun m{h,
                   run.initial_points,
@@ -78,8 +67,8 @@ Outcome surface_half_pipe(Resolution resolution) {
     int step = 0;
     while (!s.finished()) {
       s.step();
-      const Totals now = totals(s, areas);
-      const double relative = now.phi / start.phi - 1.0;
+      const SurfaceIntegrals now = totals(s, areas);
+      const double relative = now.integral / start.integral - 1.0;
       m.largest_change = std::max(m.largest_change, std::abs(relative));
       const auto& phi = s.cloud().field(s.pde()->unknown());
       m.phi_min = std::min(m.phi_min, *std::min_element(phi.begin(), phi.end()));
