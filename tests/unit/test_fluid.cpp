@@ -12,11 +12,12 @@
 namespace pellicle {
 namespace {
 
-Particles<2> one_point(double rho, double e) {
+Particles<2> one_point(Material<2>& fluid, double rho, double e) {
   Particles<2> p;
+  fluid.declare_columns(p);
   p.bodies.push_back({"b", 0, Vec2::Zero(), 0, 0, nullptr});
-  p.add(Vec2::Zero(), Vec2::Zero(), rho, rho, Sym<2>::Zero(), Sym<2>::Zero());
-  p.energy[0] = e;
+  p.add(Vec2::Zero(), Vec2::Zero(), rho, rho);
+  p.named<double>("internal_energy")[0] = e;
   return p;
 }
 
@@ -34,8 +35,8 @@ void step(const Fluid<2, Eos>& fluid, Particles<2>& p, const Mat<2>& L, double d
 
 TEST(Fluid, AdiabaticCompressionFollowsTheIsentrope) {
   const double gamma = 1.4;
-  const Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{gamma}, {}, false);
-  Particles<2> p = one_point(1.0, 2.5);
+  Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{gamma}, {}, false);
+  Particles<2> p = one_point(gas, 1.0, 2.5);
   const double entropy = gas.pressure(p, 0) / std::pow(1.0, gamma);
   const Mat<2> L = -0.5 * Mat<2>::Identity();  // uniform compression in the plane
   for (int i = 0; i < 1000; ++i) step(gas, p, L, 1e-3);
@@ -49,20 +50,20 @@ TEST(Fluid, AdiabaticCompressionFollowsTheIsentrope) {
 
 TEST(Fluid, ShearHeatsAtTheViscousDissipationRate) {
   const double mu = 0.3, rate = 2.0, rho = 1.5, dt = 1e-3;
-  const Fluid<2, BarotropicLiquid> liquid(Kinematics::plane_strain, rho, BarotropicLiquid{1e3},
-                                          {mu, 0.0, 0.0}, false);
-  Particles<2> p = one_point(rho, 0.0);
+  Fluid<2, BarotropicLiquid> liquid(Kinematics::plane_strain, rho, BarotropicLiquid{1e3},
+                                    {mu, 0.0, 0.0}, false);
+  Particles<2> p = one_point(liquid, rho, 0.0);
   Mat<2> L = Mat<2>::Zero();
   L(0, 1) = rate;  // simple shear: D_xy = rate/2, 2μ D:D = μ rate²
   for (int i = 0; i < 100; ++i) step(liquid, p, L, dt);
-  EXPECT_NEAR(p.energy[0], mu * rate * rate / rho * 100 * dt, 1e-12);
+  EXPECT_NEAR(p.named<double>("internal_energy")[0], mu * rate * rate / rho * 100 * dt, 1e-12);
   EXPECT_NEAR(p.stress[0][3], mu * rate, 1e-12);  // τ_xy = 2μ D_xy
   EXPECT_NEAR(p.stress[0][0], 0.0, 1e-12);
 }
 
 TEST(Fluid, ArtificialViscosityActsOnlyInCompression) {
   const FluidViscosity q{0.0, 0.5, 2.0};
-  const Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{1.4}, q, false);
+  Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{1.4}, q, false);
   const double rho = 1.3, c = 2.0, h = 0.1, rate = -4.0;
   EXPECT_DOUBLE_EQ(gas.artificial_viscosity(rho, c, -rate, h), 0.0);
   // q = ρ h|D|(c2 h|D| + c1 c) (thesis eqs 4.11–4.12)
@@ -70,13 +71,13 @@ TEST(Fluid, ArtificialViscosityActsOnlyInCompression) {
 }
 
 TEST(Fluid, SignalSpeedIsTheSoundSpeedWithoutViscosity) {
-  const Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{1.4}, {}, false);
-  Particles<2> p = one_point(0.125, 2.0);
+  Fluid<2, IdealGas> gas(Kinematics::plane_strain, 1.0, IdealGas{1.4}, {}, false);
+  Particles<2> p = one_point(gas, 0.125, 2.0);
   step(gas, p, Mat<2>::Zero(), 0.0);  // settle σ = −p I
   EXPECT_NEAR(gas.max_signal_speed(p, 0, 1, 0.01), std::sqrt(1.4 * 0.1 / 0.125), 1e-14);
   // A viscous gas: Δt ≤ h/(Q + sqrt(Q² + c²)), Q = 2·(4/3)μ/(ρh) in 2D.
-  const Fluid<2, IdealGas> viscous(Kinematics::plane_strain, 1.0, IdealGas{1.4}, {0.01, 0, 0},
-                                   false);
+  Fluid<2, IdealGas> viscous(Kinematics::plane_strain, 1.0, IdealGas{1.4}, {0.01, 0, 0}, false);
+  viscous.declare_columns(p);  // the columns the first gas declared
   const double c = std::sqrt(1.4 * 0.1 / 0.125), Q = 2.0 * 4.0 / 3.0 * 0.01 / (0.125 * 0.01);
   EXPECT_NEAR(viscous.max_signal_speed(p, 0, 1, 0.01), Q + std::sqrt(Q * Q + c * c), 1e-12);
 }

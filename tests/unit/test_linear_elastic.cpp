@@ -15,10 +15,12 @@ namespace {
 constexpr double E = 2.0e5, nu = 0.3;
 
 template <int D>
-Particles<D> one_point(const Sym<D>& stress = Sym<D>::Zero()) {
+Particles<D> one_point(LinearElastic<D>& m, const Sym<D>& stress = Sym<D>::Zero()) {
   Particles<D> p;
+  m.declare_columns(p);
   p.bodies.push_back({"b", 0, Vec<D>::Zero(), 0, 0, nullptr});
-  p.add(Vec<D>::Zero(), Vec<D>::Zero(), 1.0, 1.0, stress, Sym<D>::Zero());
+  p.add(Vec<D>::Zero(), Vec<D>::Zero(), 1.0, 1.0);
+  p.stress[0] = stress;
   return p;
 }
 
@@ -32,7 +34,7 @@ void step(const LinearElastic<D>& m, Particles<D>& p, const Mat<D>& L, double dt
 }
 
 TEST(LinearElastic, UniaxialStress3D) {
-  const LinearElastic<3> m(Kinematics::solid, 1.0, E, nu);
+  LinearElastic<3> m(Kinematics::solid, 1.0, E, nu);
   const double s = 123.0;
   Sym<3> strain;
   strain << s / E, -nu * s / E, -nu * s / E, 0, 0, 0;
@@ -42,8 +44,8 @@ TEST(LinearElastic, UniaxialStress3D) {
 }
 
 TEST(LinearElastic, UniaxialStressPlaneStress) {
-  const LinearElastic<2> m(Kinematics::plane_stress, 1.0, E, nu);
-  Particles<2> p = one_point<2>();
+  LinearElastic<2> m(Kinematics::plane_stress, 1.0, E, nu);
+  Particles<2> p = one_point<2>(m);
   // Stretch along x at rate a with the lateral contraction of uniaxial stress.
   const double a = 1e-3, dt = 1.0;
   Mat<2> L;
@@ -51,13 +53,14 @@ TEST(LinearElastic, UniaxialStressPlaneStress) {
   step(m, p, L, dt);
   EXPECT_NEAR(p.stress[0][0], E * a * dt, 1e-9 * E * a);
   EXPECT_NEAR(p.stress[0][1], 0.0, 1e-9 * E * a);
-  EXPECT_EQ(p.stress[0][2], 0.0);                    // σ_zz = 0 in plane stress
-  EXPECT_NEAR(p.strain[0][2], -nu * a * dt, 1e-15);  // thickness strain of uniaxial stress
+  EXPECT_EQ(p.stress[0][2], 0.0);  // σ_zz = 0 in plane stress
+  EXPECT_NEAR(p.template named<Sym<2>>("strain")[0][2], -nu * a * dt,
+              1e-15);  // thickness strain of uniaxial stress
 }
 
 TEST(LinearElastic, UniaxialStrainPlaneStrain) {
-  const LinearElastic<2> m(Kinematics::plane_strain, 1.0, E, nu);
-  Particles<2> p = one_point<2>();
+  LinearElastic<2> m(Kinematics::plane_strain, 1.0, E, nu);
+  Particles<2> p = one_point<2>(m);
   const double a = 1e-3;
   Mat<2> L;
   L << a, 0, 0, 0;
@@ -70,18 +73,18 @@ TEST(LinearElastic, UniaxialStrainPlaneStrain) {
 }
 
 TEST(LinearElastic, AxisymmetricHoopStrain) {
-  const LinearElastic<2> m(Kinematics::axisymmetric, 1.0, E, nu);
-  Particles<2> p = one_point<2>();
+  LinearElastic<2> m(Kinematics::axisymmetric, 1.0, E, nu);
+  Particles<2> p = one_point<2>(m);
   const double rate = 2e-3;  // v_r / r
   step<2>(m, p, Mat<2>::Zero(), 1.0, rate);
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   EXPECT_NEAR(p.stress[0][2], (lambda + 2 * mu) * rate, 1e-9 * E * rate);
   EXPECT_NEAR(p.stress[0][0], lambda * rate, 1e-9 * E * rate);
-  EXPECT_NEAR(p.strain[0][2], rate, 1e-15);
+  EXPECT_NEAR(p.template named<Sym<2>>("strain")[0][2], rate, 1e-15);
 }
 
 TEST(LinearElastic, IsotropyUnderRotation3D) {
-  const LinearElastic<3> m(Kinematics::solid, 1.0, E, nu);
+  LinearElastic<3> m(Kinematics::solid, 1.0, E, nu);
   std::mt19937 rng(3);
   std::normal_distribution<double> n(0.0, 1e-3);
   Mat3 e;
@@ -97,10 +100,10 @@ TEST(LinearElastic, IsotropyUnderRotation3D) {
 // A rigid spin must rotate an existing stress, not change its invariants (Jaumann rate).
 template <int D>
 void check_spin_rotates_stress(Kinematics k) {
-  const LinearElastic<D> m(k, 1.0, E, nu);
+  LinearElastic<D> m(k, 1.0, E, nu);
   Sym<D> s0 = Sym<D>::Zero();
   s0[0] = 100.0;  // uniaxial along x
-  Particles<D> p = one_point<D>(s0);
+  Particles<D> p = one_point<D>(m, s0);
   const double omega = 1.0, angle = 0.5;
   const int steps = 20000;
   Mat<D> L = Mat<D>::Zero();
@@ -125,12 +128,12 @@ TEST(LinearElastic, SpinRotatesStress3D) {
 TEST(LinearElastic, StoredEnergyIsHalfStressStrain) {
   for (Kinematics k :
        {Kinematics::plane_strain, Kinematics::plane_stress, Kinematics::axisymmetric}) {
-    const LinearElastic<2> m(k, 1.0, E, nu);
+    LinearElastic<2> m(k, 1.0, E, nu);
     Sym<2> strain;
     strain << 1e-3, -4e-4, k == Kinematics::axisymmetric ? 2e-4 : 0.0, 3e-4;
     Sym<2> e = strain;
     const Sym<2> stress = m.stress_increment(e);  // e gains ε_zz in plane stress
-    Particles<2> p = one_point<2>(stress);
+    Particles<2> p = one_point<2>(m, stress);
     EXPECT_NEAR(m.strain_energy(p, 0, 1), 0.5 * contract<2>(stress, e), 1e-12 * E * 1e-6);
   }
 }

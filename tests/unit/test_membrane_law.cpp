@@ -16,12 +16,15 @@ namespace {
 constexpr double E = 1.0e6, nu = 0.3;
 
 template <int D>
-Particles<D> one_point(const Vec<D>& tangent, const Vec<D>& normal, const Sym<D>& strain) {
+Particles<D> one_point(Membrane<D>& m, const Vec<D>& tangent, const Vec<D>& normal,
+                       const Sym<D>& strain) {
   Particles<D> p;
+  m.declare_columns(p);
   p.bodies.push_back({"m", 0, Vec<D>::Zero(), 0, 0, nullptr});
-  p.add(Vec<D>::Zero(), Vec<D>::Zero(), 1.0, 1.0, Sym<D>::Zero(), strain);
-  p.tangent[0] = tangent;
-  p.normal[0] = normal;
+  p.add(Vec<D>::Zero(), Vec<D>::Zero(), 1.0, 1.0);
+  p.template named<Sym<D>>("strain")[0] = strain;
+  p.template named<Vec<D>>("tangent")[0] = tangent;
+  p.template named<Vec<D>>("normal")[0] = normal;
   return p;
 }
 
@@ -34,10 +37,10 @@ void update(const Membrane<D>& m, Particles<D>& p, const Mat<D>& L, double dt) {
 
 TEST(MembraneLaw, StringCarriesOnlyTangentStress) {
   // A string at 30° stretched along itself: σ = E e t⊗t, nothing across it (eqs 5.5–5.9).
-  const Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::uniaxial, false);
+  Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::uniaxial, false);
   const double a = std::numbers::pi / 6;
   const Vec2 t(std::cos(a), std::sin(a)), n(-t.y(), t.x());
-  Particles<2> p = one_point<2>(t, n, Sym<2>::Zero());
+  Particles<2> p = one_point<2>(m, t, n, Sym<2>::Zero());
   const double e = 1e-3;
   update(m, p, Mat<2>(e * t * t.transpose()), 1.0);
   const Mat3 s = to_mat3<2>(p.stress[0]);
@@ -46,15 +49,15 @@ TEST(MembraneLaw, StringCarriesOnlyTangentStress) {
   EXPECT_NEAR(t.dot(s.topLeftCorner<2, 2>() * n), 0.0, 1e-9 * E * e);
   EXPECT_EQ(s(2, 2), 0.0);
   // The stored strain is the uniaxial one: lateral strains −ν e (eq 5.6).
-  const Mat3 strain = to_mat3<2>(p.strain[0]);
+  const Mat3 strain = to_mat3<2>(p.named<Sym<2>>("strain")[0]);
   EXPECT_NEAR(n.dot(strain.topLeftCorner<2, 2>() * n), -nu * e, 1e-15);
   EXPECT_NEAR(strain(2, 2), -nu * e, 1e-15);
 }
 
 TEST(MembraneLaw, PlaneStressMembraneIn2DKeepsOutOfPlaneStress) {
   // Plane strain along z: σ11 = E e/(1 − ν²), σ22 (z) = ν σ11, σ33 = 0 (eqs 5.12–5.15).
-  const Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::plane_stress, false);
-  Particles<2> p = one_point<2>(Vec2(1, 0), Vec2(0, 1), Sym<2>::Zero());
+  Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::plane_stress, false);
+  Particles<2> p = one_point<2>(m, Vec2(1, 0), Vec2(0, 1), Sym<2>::Zero());
   const double e = 1e-3;
   Mat<2> L = Mat<2>::Zero();
   L(0, 0) = e;
@@ -62,15 +65,15 @@ TEST(MembraneLaw, PlaneStressMembraneIn2DKeepsOutOfPlaneStress) {
   EXPECT_NEAR(p.stress[0][0], E * e / (1 - nu * nu), 1e-6);
   EXPECT_NEAR(p.stress[0][2], nu * E * e / (1 - nu * nu), 1e-6);
   EXPECT_NEAR(p.stress[0][1], 0.0, 1e-9);
-  EXPECT_NEAR(p.strain[0][1], -nu / (1 - nu) * e, 1e-15);  // ε3' (eq 5.12)
+  EXPECT_NEAR(p.named<Sym<2>>("strain")[0][1], -nu / (1 - nu) * e, 1e-15);  // ε3' (eq 5.12)
 }
 
 TEST(MembraneLaw, AxisymmetricMembraneFeelsTheHoopStrain) {
   // An axisymmetric membrane (an airbag's wall): the hoop direction is its second in-surface
   // direction, strained by v_r/r; a radial expansion with no meridional stretch gives
   // σθθ = E e/(1 − ν²) and σ along the meridian ν times that.
-  const Membrane<2> m(Kinematics::axisymmetric, 1.0, E, nu, MembraneLaw::plane_stress, false);
-  Particles<2> p = one_point<2>(Vec2(0, 1), Vec2(1, 0), Sym<2>::Zero());  // meridian along z
+  Membrane<2> m(Kinematics::axisymmetric, 1.0, E, nu, MembraneLaw::plane_stress, false);
+  Particles<2> p = one_point<2>(m, Vec2(0, 1), Vec2(1, 0), Sym<2>::Zero());  // meridian along z
   const std::vector<Mat<2>> gradient{Mat<2>::Zero()};
   const std::vector<double> hoop{1e-3};
   m.update(MaterialStep<2>{p, gradient, hoop, 1.0, 0, 1});
@@ -80,10 +83,10 @@ TEST(MembraneLaw, AxisymmetricMembraneFeelsTheHoopStrain) {
 }
 
 TEST(MembraneLaw, PlaneStressIn3DHasInPlaneShear) {
-  const Membrane<3> m(Kinematics::solid, 1.0, E, nu, MembraneLaw::plane_stress, false);
+  Membrane<3> m(Kinematics::solid, 1.0, E, nu, MembraneLaw::plane_stress, false);
   Sym<3> strain = Sym<3>::Zero();
   strain << 1e-3, 5e-4, 0.0, 0.0, 0.0, 2e-4;  // xx, yy, zz, yz, xz, xy
-  Particles<3> p = one_point<3>(Vec3::UnitX(), Vec3::UnitZ(), strain);
+  Particles<3> p = one_point<3>(m, Vec3::UnitX(), Vec3::UnitZ(), strain);
   update<3>(m, p, Mat3::Zero(), 0.0);
   const double C = E / (1 - nu * nu);
   EXPECT_NEAR(p.stress[0][0], C * (1e-3 + nu * 5e-4), 1e-6);
@@ -92,26 +95,27 @@ TEST(MembraneLaw, PlaneStressIn3DHasInPlaneShear) {
   EXPECT_NEAR(p.stress[0][2], 0.0, 1e-9);
   // The same strain seen in a frame turned in the plane gives the same stress tensor.
   const Vec3 t1 = Vec3(1, 1, 0).normalized();
-  Particles<3> q = one_point<3>(t1, Vec3::UnitZ(), strain);
+  Particles<3> q = one_point<3>(m, t1, Vec3::UnitZ(), strain);
   update<3>(m, q, Mat3::Zero(), 0.0);
   EXPECT_LT((q.stress[0] - p.stress[0]).norm(), 1e-9 * p.stress[0].norm());
 }
 
 TEST(MembraneLaw, OneWayStringCarriesNoCompressionButRemembersIt) {
-  const Membrane<2> m(Kinematics::plane_strain, 1.0, E, 0.0, MembraneLaw::uniaxial, true);
-  Particles<2> p = one_point<2>(Vec2(0, 1), Vec2(-1, 0), Sym<2>::Zero());
+  Membrane<2> m(Kinematics::plane_strain, 1.0, E, 0.0, MembraneLaw::uniaxial, true);
+  Particles<2> p = one_point<2>(m, Vec2(0, 1), Vec2(-1, 0), Sym<2>::Zero());
   Mat<2> L = Mat<2>::Zero();
   L(1, 1) = -0.01;  // shorten by 1%
   update(m, p, L, 1.0);
   EXPECT_EQ(p.stress[0].norm(), 0.0);
-  EXPECT_NEAR(p.strain[0][1], -0.01, 1e-15);  // the slack is remembered (IJNME §3.2)
-  L(1, 1) = 0.015;  // stretch back past the slack: tension from the net strain only
+  EXPECT_NEAR(p.named<Sym<2>>("strain")[0][1], -0.01,
+              1e-15);  // the slack is remembered (IJNME §3.2)
+  L(1, 1) = 0.015;     // stretch back past the slack: tension from the net strain only
   update(m, p, L, 1.0);
   EXPECT_NEAR(p.stress[0][1], E * 0.005, 1e-6);
 }
 
 TEST(MembraneLaw, TensionFieldWrinklesAndSlackens) {
-  const Membrane<3> m(Kinematics::solid, 1.0, E, nu, MembraneLaw::plane_stress, true);
+  Membrane<3> m(Kinematics::solid, 1.0, E, nu, MembraneLaw::plane_stress, true);
   double e22, s11, s22, s12;
   // Taut: biaxial tension is the plane-stress law.
   e22 = 1e-3;
@@ -140,15 +144,15 @@ TEST(MembraneLaw, TotalStrainFollowsATurningFrame) {
   // A stretched string turned rigidly through 90° in 1000 steps (no stretching: L = 0 and
   // only the frame turns). Rotating the total strain into each new frame (thesis §5.4.2)
   // keeps the tension, losing only (1 + ν) e dθ² per step.
-  const Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::uniaxial, false);
+  Membrane<2> m(Kinematics::plane_strain, 1.0, E, nu, MembraneLaw::uniaxial, false);
   Sym<2> strain;
   strain << 1e-3, -nu * 1e-3, -nu * 1e-3, 0.0;
-  Particles<2> p = one_point<2>(Vec2(1, 0), Vec2(0, 1), strain);
+  Particles<2> p = one_point<2>(m, Vec2(1, 0), Vec2(0, 1), strain);
   const int steps = 1000;
   for (int k = 1; k <= steps; ++k) {
     const double a = 0.5 * std::numbers::pi * k / steps;
-    p.tangent[0] = Vec2(std::cos(a), std::sin(a));
-    p.normal[0] = Vec2(-std::sin(a), std::cos(a));
+    p.named<Vec2>("tangent")[0] = Vec2(std::cos(a), std::sin(a));
+    p.named<Vec2>("normal")[0] = Vec2(-std::sin(a), std::cos(a));
     update<2>(m, p, Mat<2>::Zero(), 0.0);
   }
   EXPECT_NEAR(p.stress[0][1], E * 1e-3, 0.01 * E * 1e-3);  // now along y

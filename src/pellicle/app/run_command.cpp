@@ -67,14 +67,11 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
   }
   const bool flip =
       c.transfer.update == VelocityUpdate::flip || c.transfer.update == VelocityUpdate::blend;
-  for (const auto& b : p.bodies)
-    if (flip && s.material(b.material).is_fluid())
-      std::fprintf(out,
-                   "warning   body '%s' is a fluid moved by FLIP, whose ringing instability "
-                   "(Brackbill 1988) grows noise in slow flow at a rate of about c/h; "
-                   "velocity_update = \"apic\" with a B-spline kernel, or \"pic\", avoids it "
-                   "(docs/theory/gas.md)\n",
-                   b.name.c_str());
+  for (const auto& b : p.bodies) {
+    const std::string caution = flip ? s.material(b.material).flip_caution() : "";
+    if (!caution.empty())
+      std::fprintf(out, "warning   body '%s' is %s\n", b.name.c_str(), caution.c_str());
+  }
   std::fprintf(out, "contact   %s\n",
                s.contact() ? s.contact()->describe().c_str() : "single field (standard MPM)");
   std::fprintf(out, "points    %ld in all\n", p.size());

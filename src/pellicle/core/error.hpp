@@ -42,6 +42,14 @@ class InputError : public std::runtime_error {
   std::vector<InputProblem> problems_;
 };
 
+//! A simulation assembled from parts that do not work together (USF with a contact model,
+//! a body without points, …), found by the engine itself when it is built from C++. The
+//! case reader reports the same problems with their file location first. Exit code 2.
+class SetupError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
 //! The state of a run became unusable (NaN, a point left the grid, CFL above one, …).
 class NumericalError : public std::runtime_error {
  public:

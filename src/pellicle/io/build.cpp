@@ -55,6 +55,7 @@ template <int D>
 std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   Grid<D> grid(c.lower, c.upper, c.cell, c.faces);
   Particles<D> points;
+  for (auto& material : c.materials) material->declare_columns(points);
   std::vector<InputProblem> problems;
   for (const auto& b : c.bodies) {
     const Material<D>& material = *c.materials[b.material];
@@ -81,9 +82,6 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
     for (const auto& entry : b.point_velocities) check_index(entry.first, "body.point_velocities");
     points.bodies.push_back(
         {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frame_estimator(c, b)});
-    const Sym<D> strain = b.initial_strain.value_or(Sym<D>::Zero());
-    const Sym<D> stress =
-        b.initial_stress ? *b.initial_stress : material.stress_from_strain(strain);
     double body_mass = 0.0;
     Vec<D> first_moment = Vec<D>::Zero();
     const long last = b.initial_points.second < 0 ? static_cast<long>(positions.size()) - 1
@@ -93,15 +91,16 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
                           "body '" + b.name + "': no point " + std::to_string(last) + " (it has " +
                               std::to_string(positions.size()) + ")"});
     const double density = b.density.value_or(material.density());
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      const auto& [x, volume] = positions[i];
-      const long index = static_cast<long>(i);
-      const bool initial = index >= b.initial_points.first && index <= last;
-      points.add(x, b.velocity, density * volume, density, initial ? stress : Sym<D>::Zero(),
-                 initial ? strain : Sym<D>::Zero());
-      points.energy.back() = b.internal_energy;
-    }
+    for (const auto& [x, volume] : positions) points.add(x, b.velocity, density * volume, density);
     auto& body = points.bodies.back();
+    InitialState<D> state;
+    state.internal_energy = b.internal_energy;
+    material.initialise(points, body.begin, body.end, state);
+    state.strain = b.initial_strain.value_or(Sym<D>::Zero());
+    state.stress = b.initial_stress;
+    if (last < body.count())
+      material.initialise(points, body.begin + b.initial_points.first, body.begin + last + 1,
+                          state);
     // Point masses given explicitly (an end mass on a string) keep their point's volume.
     for (const auto& [index, mass] : b.point_masses) {
       if (index >= body.count()) continue;

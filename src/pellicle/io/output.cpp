@@ -59,8 +59,8 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
     for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".vel_" << axis_names[d];
   }
   for (const auto& b : simulation.points().bodies)
-    if (simulation.material(b.material).is_fluid())
-      history_ << ',' << b.name << ".pressure," << b.name << ".volume";
+    for (const auto& name : simulation.material(b.material).history_names())
+      history_ << ',' << b.name << '.' << name;
   if (simulation.contact_forces())
     for (const auto& b : simulation.points().bodies)
       for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".contact_" << axis_names[d];
@@ -86,12 +86,11 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     for (int d = 0; d < D; ++d) history_ << ',' << com[d];
     for (int d = 0; d < D; ++d) history_ << ',' << vel[d];
   }
+  std::vector<double> values;
   for (const auto& b : p.bodies) {
-    const Material<D>& material = simulation.material(b.material);
-    if (!material.is_fluid()) continue;
-    double volume = 0.0;
-    for (long i = b.begin; i < b.end; ++i) volume += p.volume[i];
-    history_ << ',' << material.mean_pressure(p, b.begin, b.end) << ',' << volume;
+    values.clear();
+    simulation.material(b.material).history_values(p, b.begin, b.end, values);
+    for (double v : values) history_ << ',' << v;
   }
   if (const auto* forces = simulation.contact_forces())
     for (const auto& f : *forces)

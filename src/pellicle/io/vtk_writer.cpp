@@ -1,5 +1,6 @@
 #include "pellicle/io/vtk_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -7,7 +8,6 @@
 
 #include "pellicle/io/atomic_file.hpp"
 #include "pellicle/io/vtk_arrays.hpp"
-#include "pellicle/mpm/materials/membrane.hpp"
 
 namespace pellicle {
 namespace {
@@ -24,42 +24,60 @@ std::vector<double> as_paraview_tensor(const std::vector<Sym<D>>& s) {
   return out;
 }
 
+//! Declared columns as ParaView arrays: vectors as xyz, symmetric tensors in ParaView's
+//! order, matrices row by row.
 template <int D>
-bool has_membranes(const Simulation<D>& s) {
-  for (const auto& b : s.points().bodies)
-    if (b.frames) return true;
-  return false;
-}
-
-template <int D>
-bool has_fluids(const Simulation<D>& s) {
-  for (const auto& b : s.points().bodies)
-    if (s.material(b.material).is_fluid()) return true;
-  return false;
-}
-
-//! Membrane points: frame, and strain and stress in the local axes (11 tangent, 22 second
-//! in-surface direction, 12 in-surface shear); zero for other points.
-template <int D>
-void write_membrane_fields(std::string& out, const Simulation<D>& s) {
-  const Particles<D>& p = s.points();
+void write_declared_columns(std::string& out, const Particles<D>& p) {
   const std::size_t n = p.position.size();
-  std::vector<double> strain(3 * n, 0.0), stress(3 * n, 0.0);
-  for (const auto& b : p.bodies) {
-    if (!b.frames) continue;
-    for (long i = b.begin; i < b.end; ++i) {
-      const Mat3 Q = membrane_axes(p.tangent[i], p.normal[i]);
-      const Mat3 e = Q * to_mat3<D>(p.strain[i]) * Q.transpose();
-      const Mat3 t = Q * to_mat3<D>(p.stress[i]) * Q.transpose();
-      const double le[3] = {e(0, 0), e(1, 1), e(0, 1)}, lt[3] = {t(0, 0), t(1, 1), t(0, 1)};
-      std::copy(le, le + 3, strain.begin() + 3 * i);
-      std::copy(lt, lt + 3, stress.begin() + 3 * i);
+  for (int c = 0; c < p.columns.count(); ++c) {
+    if (!p.columns.spec(c).snapshot) continue;
+    const double* data = p.columns.data(c);
+    const int k = p.columns.components(c);
+    const std::string& name = p.columns.spec(c).name;
+    switch (p.columns.shape(c)) {
+      case ColumnShape::scalar:
+        data_array(out, "Float64", name, 1, std::vector<double>(data, data + n));
+        break;
+      case ColumnShape::vector:
+        data_array(out, "Float64", name, 3,
+                   as_xyz<D>(std::vector<Vec<D>>(reinterpret_cast<const Vec<D>*>(data),
+                                                 reinterpret_cast<const Vec<D>*>(data) + n)));
+        break;
+      case ColumnShape::symmetric:
+        data_array(
+            out, "Float64", name, 6,
+            as_paraview_tensor<D>(std::vector<Sym<D>>(reinterpret_cast<const Sym<D>*>(data),
+                                                      reinterpret_cast<const Sym<D>*>(data) + n)));
+        break;
+      case ColumnShape::matrix:
+        data_array(out, "Float64", name, k, std::vector<double>(data, data + n * k));
+        break;
     }
   }
-  data_array(out, "Float64", "normal", 3, as_xyz<D>(p.normal));
-  data_array(out, "Float64", "tangent", 3, as_xyz<D>(p.tangent));
-  data_array(out, "Float64", "membrane_strain", 3, strain);
-  data_array(out, "Float64", "membrane_stress", 3, stress);
+}
+
+//! What materials compute for snapshots (membrane strain and stress in the local axes), over
+//! every point, zero where a body's material does not compute it.
+template <int D>
+void write_material_fields(std::string& out, const Simulation<D>& s) {
+  const Particles<D>& p = s.points();
+  std::vector<std::pair<SnapshotField, std::vector<double>>> fields;
+  for (const auto& b : p.bodies) {
+    const auto& material = s.material(b.material);
+    const auto offered = material.snapshot_fields();
+    for (std::size_t f = 0; f < offered.size(); ++f) {
+      auto it = std::find_if(fields.begin(), fields.end(),
+                             [&](const auto& e) { return e.first.name == offered[f].name; });
+      if (it == fields.end()) {
+        fields.emplace_back(offered[f], std::vector<double>(offered[f].components * p.size()));
+        it = fields.end() - 1;
+      }
+      material.snapshot_values(static_cast<int>(f), p, b.begin, b.end,
+                               it->second.data() + offered[f].components * b.begin);
+    }
+  }
+  for (const auto& [field, values] : fields)
+    data_array(out, "Float64", field.name, field.components, values);
 }
 
 }  // namespace
@@ -101,12 +119,11 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
   data_array(out, "Float64", "volume", 1, p.volume);
   data_array(out, "Float64", "density", 1, p.density);
   data_array(out, "Float64", "stress", 6, as_paraview_tensor<D>(p.stress));
-  data_array(out, "Float64", "strain", 6, as_paraview_tensor<D>(p.strain));
   data_array(out, "Float64", "pressure", 1, pressure);
   data_array(out, "Float64", "von_mises", 1, von_mises);
   data_array(out, "Int32", "body", 1, body);
-  if (has_membranes(simulation)) write_membrane_fields(out, simulation);
-  if (has_fluids(simulation)) data_array(out, "Float64", "internal_energy", 1, p.energy);
+  write_declared_columns(out, p);
+  write_material_fields(out, simulation);
   out += "</PointData>\n<Cells>\n";
   data_array(out, "Int32", "connectivity", 1, connectivity);
   data_array(out, "Int32", "offsets", 1, offsets);

@@ -1,12 +1,17 @@
 #pragma once
 //! Material points, stored as one array per quantity (structure of arrays). Points of one
-//! body are contiguous: body b owns [bodies[b].begin, bodies[b].end).
+//! body are contiguous: body b owns [bodies[b].begin, bodies[b].end). Every point has the
+//! common columns below; a quantity only some models need (strain, frames, internal energy,
+//! the APIC affine velocity, plastic strain) is a column its model declares (PointColumns).
 
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/mpm/point_columns.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
@@ -23,6 +28,13 @@ struct BodyInfo {
   long count() const { return end - begin; }
 };
 
+//! Names of the columns that more than one model reads.
+namespace column_names {
+inline constexpr const char* strain = "strain";    //!< accumulated small strain Σ Δε
+inline constexpr const char* normal = "normal";    //!< membrane frame: unit normal
+inline constexpr const char* tangent = "tangent";  //!< membrane frame: unit tangent (3D: t1)
+}  // namespace column_names
+
 template <int D>
 struct Particles {
   std::vector<Vec<D>> position;
@@ -31,31 +43,70 @@ struct Particles {
   std::vector<double> volume;   //!< current volume (2D: per unit depth; axisymmetric: 2πr × area)
   std::vector<double> density;  //!< current density, updated by continuity (IJNME eq 17)
   std::vector<Sym<D>> stress;   //!< Cauchy stress
-  std::vector<Sym<D>> strain;   //!< accumulated small strain Σ Δε
-  std::vector<double> energy;   //!< specific internal energy e (fluids; 0 for solids)
-  std::vector<Mat<D>> affine;   //!< APIC affine velocity C_p (only sized when APIC is used)
-  std::vector<Vec<D>> normal;   //!< membrane points: unit normal of the local frame (else 0)
-  std::vector<Vec<D>> tangent;  //!< membrane points: unit tangent (3D: t1; t2 = n × t1)
   std::vector<int> body;        //!< body index of each point
   std::vector<BodyInfo<D>> bodies;
+  PointColumns columns;  //!< the declared columns (point_columns.hpp)
 
   long size() const { return static_cast<long>(position.size()); }
 
-  //! Append one point of the body currently being built (the last in `bodies`).
-  void add(const Vec<D>& x, const Vec<D>& v, double m, double rho, const Sym<D>& s,
-           const Sym<D>& e) {
+  //! Declare a column of T = double, Vec<D>, Sym<D> or Mat<D> for every point (zero-filled).
+  template <class T>
+  Column<T> declare(const ColumnSpec& spec) {
+    return columns.template declare<T>(spec, shape_of<T>(), size());
+  }
+  template <class T>
+  std::vector<T>& operator[](Column<T> c) {
+    return columns[c];
+  }
+  template <class T>
+  const std::vector<T>& operator[](Column<T> c) const {
+    return columns[c];
+  }
+
+  //! A declared column by name, for code outside the model that owns it (tests, validation
+  //! problems). Throws std::out_of_range when no model declared it with that type.
+  template <class T>
+  std::vector<T>& named(const std::string& name) {
+    return columns[checked<T>(name)];
+  }
+  template <class T>
+  const std::vector<T>& named(const std::string& name) const {
+    return columns[checked<T>(name)];
+  }
+
+  //! Append one point of the body currently being built (the last in `bodies`); its declared
+  //! columns start at zero.
+  void add(const Vec<D>& x, const Vec<D>& v, double m, double rho) {
     position.push_back(x);
     velocity.push_back(v);
     mass.push_back(m);
     density.push_back(rho);
     volume.push_back(m / rho);
-    stress.push_back(s);
-    strain.push_back(e);
-    energy.push_back(0.0);
-    normal.push_back(Vec<D>::Zero());
-    tangent.push_back(Vec<D>::Zero());
+    stress.push_back(Sym<D>::Zero());
     body.push_back(static_cast<int>(bodies.size()) - 1);
     bodies.back().end = size();
+    columns.resize(size());
+  }
+
+ private:
+  template <class T>
+  Column<T> checked(const std::string& name) const {
+    const Column<T> c = columns.template find<T>(name);
+    if (!c.valid()) throw std::out_of_range("no point column '" + name + "' of that type");
+    return c;
+  }
+  template <class T>
+  static constexpr ColumnShape shape_of() {
+    if constexpr (std::is_same_v<T, double>)
+      return ColumnShape::scalar;
+    else if constexpr (std::is_same_v<T, Vec<D>>)
+      return ColumnShape::vector;
+    else if constexpr (std::is_same_v<T, Sym<D>>)
+      return ColumnShape::symmetric;
+    else {
+      static_assert(std::is_same_v<T, Mat<D>>, "columns hold double, Vec<D>, Sym<D> or Mat<D>");
+      return ColumnShape::matrix;
+    }
   }
 };
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/mpm/boundary/rigid_bodies.hpp"
 #include "pellicle/mpm/cell_density.hpp"
 
 namespace pellicle {
@@ -16,23 +17,41 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
                           std::vector<std::unique_ptr<Material<D>>> materials,
                           std::unique_ptr<Transfer<D>> transfer, Vec<D> gravity)
     : settings_(settings),
-      grid_(std::move(grid)),
+      fields_(std::move(grid)),
       points_(std::move(points)),
       materials_(std::move(materials)),
       transfer_(std::move(transfer)),
+      scheme_(make_scheme(settings.scheme)),
       gravity_(gravity) {
-  for (const auto& v : points_.velocity) max_speed_ = std::max(max_speed_, v.norm());
-  if (points_.affine.size() != points_.position.size())
-    points_.affine.assign(points_.position.size(), Mat<D>::Zero());
-  rigid_velocity_.assign(points_.bodies.size(), Vec<D>::Zero());
-  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
-    if (!materials_[points_.bodies[b].material]->is_rigid()) continue;
-    has_rigid_bodies_ = true;
-    rigid_velocity_[b] = points_.velocity[points_.bodies[b].begin];
+  if (points_.bodies.empty()) throw SetupError("a simulation needs at least one body");
+  for (const auto& body : points_.bodies) {
+    if (body.count() <= 0) throw SetupError("body '" + body.name + "' has no point");
+    if (body.material < 0 || body.material >= material_count())
+      throw SetupError("body '" + body.name + "' names material " + std::to_string(body.material) +
+                       " of " + std::to_string(material_count()));
   }
-  for (const auto& body : points_.bodies)
-    if (materials_[body.material]->density_from_cells())
-      cell_density_ranges_.emplace_back(body.begin, body.end);
+  for (auto& material : materials_) material->declare_columns(points_);
+  transfer_->declare_columns(points_);
+  normal_ = points_.columns.template find<Vec<D>>(column_names::normal);
+  tangent_ = points_.columns.template find<Vec<D>>(column_names::tangent);
+  for (const auto& v : points_.velocity) max_speed_ = std::max(max_speed_, v.norm());
+
+  std::vector<int> rigid;
+  std::vector<Vec<D>> rigid_velocity;
+  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
+    const auto& body = points_.bodies[b];
+    const auto& material = *materials_[body.material];
+    if (material.is_rigid()) {
+      rigid.push_back(static_cast<int>(b));
+      rigid_velocity.push_back(points_.velocity[body.begin]);
+    }
+    if (material.density_from_cells()) cell_density_ranges_.emplace_back(body.begin, body.end);
+    if (material.is_membrane() && !(body.frames && normal_.valid()))
+      throw SetupError("membrane body '" + body.name + "' needs a frame estimator");
+  }
+  if (!rigid.empty())
+    add_hook(std::make_unique<RigidBodies<D>>(std::move(rigid), std::move(rigid_velocity)));
+
   // Membrane stresses follow from their strains in their frames, fluid stresses from their
   // density and energy: settle them once before the first step (a zero step changes nothing
   // else).
@@ -41,104 +60,155 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   if (settings_.kinematics == Kinematics::axisymmetric) hoop_rate_.assign(points_.size(), 0.0);
   for (const auto& body : points_.bodies) {
     const auto& material = *materials_[body.material];
-    if (material.is_membrane() || material.is_fluid())
-      material.update(
-          {points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end, grid_.cell()});
+    if (material.stress_from_state())
+      material.update({points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end,
+                       this->grid().cell()});
   }
+}
+
+template <int D>
+void Simulation<D>::add_hook(std::unique_ptr<StepHook<D>> hook) {
+  if (hook->needs_body_fields()) {
+    if (!scheme_->allows_body_fields())
+      throw SetupError(std::string("contact models work with the \"musl\" or \"usl\" scheme, "
+                                   "not \"") +
+                       scheme_->name() +
+                       "\": it updates the stress from mapped velocities no "
+                       "contact rule has corrected");
+    if (fields_.per_body()) throw SetupError("only one contact model per simulation");
+    std::vector<PointRange> ranges;
+    for (const auto& body : points_.bodies) ranges.push_back({body.begin, body.end});
+    fields_.use_body_fields(ranges);
+  }
+  hooks_.push_back(std::move(hook));
 }
 
 template <int D>
 void Simulation<D>::set_contact(std::unique_ptr<ContactModel<D>> model) {
-  contact_ = std::move(model);
-  fields_ = contact_
-                ? std::make_unique<BodyFields<D>>(grid_, static_cast<int>(points_.bodies.size()))
-                : nullptr;
-}
-
-template <int D>
-void Simulation<D>::prescribe_rigid_nodes() {
-  // The centre-of-mass field takes every rigid body's velocity; with a contact model each
-  // body's own field takes only its own, so the others meet it through the contact rule.
-  std::vector<std::pair<long, Vec<D>>> prescribed;
-  std::vector<long> nodes;
-  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
-    const auto& body = points_.bodies[b];
-    if (!materials_[body.material]->is_rigid()) continue;
-    nodes.clear();
-    transfer_->touched_nodes(grid_, body.begin, body.end, nodes);
-    const std::size_t first = prescribed.size();
-    for (long n : nodes) prescribed.emplace_back(n, points_.velocity[body.begin]);
-    if (fields_)
-      fields_->body_grid(static_cast<int>(b))
-          .prescribe({prescribed.begin() + first, prescribed.end()});
-  }
-  grid_.prescribe(std::move(prescribed));
-}
-
-template <int D>
-void Simulation<D>::restore_rigid_velocities() {
-  // Rigid points keep their prescribed velocity exactly (FLIP would add the nodes' change).
-  for (std::size_t b = 0; b < points_.bodies.size(); ++b) {
-    const auto& body = points_.bodies[b];
-    if (!materials_[body.material]->is_rigid()) continue;
-    for (long p = body.begin; p < body.end; ++p) points_.velocity[p] = rigid_velocity_[b];
-  }
+  if (!model) return;
+  if (contact_) throw SetupError("only one contact model per simulation");
+  ContactModel<D>* raw = model.get();
+  add_hook(std::move(model));
+  contact_ = raw;
 }
 
 template <int D>
 void Simulation<D>::update_frames() {
   for (const auto& body : points_.bodies)
     if (body.frames)
-      body.frames->estimate(points_.position, body.begin, body.end, points_.normal,
-                            points_.tangent);
+      body.frames->estimate(points_.position, body.begin, body.end, points_[normal_],
+                            points_[tangent_]);
 }
 
 template <int D>
 void Simulation<D>::step() {
+  const double dt = time_step();  // 1 time_step
+  stencils();                     // 2 stencils
+  scheme_->advance(*this, dt);    // 3–7 to_grid, grid, to_points, remap, materials
+  observe(dt);                    // 8 observe
+}
+
+template <int D>
+double Simulation<D>::time_step() {
   const double signal = max_signal_speed();
   const double dt = time_step(signal);
-  cfl_number_ = dt * signal / grid_.cell();
+  cfl_number_ = dt * signal / grid().cell();
   if (cfl_number_ > settings_.cfl_limit) {
     std::ostringstream what;
     what << "CFL number " << cfl_number_ << " > " << settings_.cfl_limit << " with dt = " << dt
          << " (this point is the fastest signal); reduce solver.dt or use solver.cfl";
     fail(fastest_point(), what.str());
   }
-  transfer_->compute_stencils(points_, grid_);  // stencils
-  if (has_rigid_bodies_) prescribe_rigid_nodes();
-  if (settings_.scheme == UpdateScheme::usf) {  // to_grid (USF: stress first)
-    transfer_->to_grid(points_, gravity_, grid_, false);
-    grid_.velocities_from_momentum();
-    update_materials(dt);
-    transfer_->forces_to_grid(points_, gravity_, grid_);
-  } else if (fields_) {
-    fields_->to_grid(*transfer_, points_, gravity_, grid_);
-  } else {
-    transfer_->to_grid(points_, gravity_, grid_, true);
-  }
-  grid_.integrate(dt);  // grid
-  if (fields_) {        // contact: each body's field, then the model's rule at shared nodes
-    fields_->integrate(dt);
-    contact_->resolve(*fields_, grid_, points_, dt, ContactPass::lagrangian);
-  }
-  PointFailure failure;  // to_points
-  max_speed_ = fields_ ? fields_->to_points(*transfer_, dt, points_, failure)
-                       : transfer_->to_points(grid_, dt, points_, failure);
+  return dt;
+}
+
+template <int D>
+void Simulation<D>::stencils() {
+  transfer_->compute_stencils(points_, grid());
+}
+
+template <int D>
+void Simulation<D>::to_grid(bool forces) {
+  for (int k = 0; k < fields_.count(); ++k)
+    transfer_->to_grid(points_, gravity_, fields_.field(k), forces, fields_.points(k));
+  fields_.sum_to_centre_of_mass(true, forces);
+  for (auto& hook : hooks_) hook->after_to_grid(*this);
+}
+
+template <int D>
+void Simulation<D>::grid_velocities() {
+  fields_.for_each_grid([](Grid<D>& g) { g.velocities_from_momentum(); });
+}
+
+template <int D>
+void Simulation<D>::forces_to_grid() {
+  for (int k = 0; k < fields_.count(); ++k)
+    transfer_->forces_to_grid(points_, gravity_, fields_.field(k), fields_.points(k));
+  fields_.sum_to_centre_of_mass(false, true);
+}
+
+template <int D>
+void Simulation<D>::grid(double dt) {
+  fields_.for_each_grid([dt](Grid<D>& g) { g.integrate(dt); });
+  for (auto& hook : hooks_) hook->after_grid_update(*this, GridPass::lagrangian, dt);
+}
+
+template <int D>
+void Simulation<D>::to_points(double dt) {
+  PointFailure failure;
+  max_speed_ = 0.0;
+  for (int k = 0; k < fields_.count() && failure.point < 0; ++k)
+    max_speed_ = std::max(max_speed_, transfer_->to_points(fields_.field(k), dt, points_, failure,
+                                                           fields_.points(k)));
   if (failure.point >= 0) fail(failure.point, failure.what);
-  if (has_rigid_bodies_) restore_rigid_velocities();
-  if (settings_.scheme == UpdateScheme::musl) {  // remap
-    if (fields_) {
-      fields_->remap(*transfer_, points_, grid_);
-      contact_->resolve(*fields_, grid_, points_, dt, ContactPass::convected);
-    } else {
-      transfer_->remap(points_, grid_);
-    }
+  for (auto& hook : hooks_) hook->after_to_points(*this);
+}
+
+template <int D>
+void Simulation<D>::remap(double dt) {
+  for (int k = 0; k < fields_.count(); ++k)
+    transfer_->remap(points_, fields_.field(k), fields_.points(k));
+  if (fields_.per_body()) {
+    fields_.sum_to_centre_of_mass(false, false);
+    fields_.centre_of_mass().velocities_from_momentum();
   }
-  if (settings_.scheme != UpdateScheme::usf) update_materials(dt);  // materials
+  for (auto& hook : hooks_) hook->after_grid_update(*this, GridPass::convected, dt);
+}
+
+template <int D>
+void Simulation<D>::materials(double dt) {
+  for (int k = 0; k < fields_.count(); ++k) {
+    const long bad = transfer_->point_kinematics(fields_.field(k), dt, points_, velocity_gradient_,
+                                                 hoop_rate_, fields_.points(k));
+    if (bad >= 0) fail(bad, "non-positive or non-finite density");
+  }
+  if (!cell_density_ranges_.empty())  // fluids with cell densities (thesis eq 4.6)
+    cell_quadratic_density(grid(), settings_.kinematics == Kinematics::axisymmetric,
+                           cell_density_ranges_, points_);
+  update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
+  for (const auto& body : points_.bodies) {
+    const auto& material = *materials_[body.material];
+    material.update(
+        {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid().cell()});
+    const long invalid = material.first_invalid_point(points_, body.begin, body.end);
+    if (invalid >= 0) fail(invalid, "non-finite or negative specific internal energy");
+  }
+}
+
+template <int D>
+void Simulation<D>::observe(double dt) {
   time_ += dt;
   last_dt_ = dt;
   ++step_;
-  for (auto* observer : observers_) observer->after_step(*this);  // observe
+  for (auto* observer : observers_) observer->after_step(*this);
+}
+
+template <int D>
+void Simulation<D>::restore_clock(double time, long step, double last_dt, double max_speed) {
+  time_ = time;
+  step_ = step;
+  last_dt_ = last_dt;
+  max_speed_ = max_speed;
 }
 
 template <int D>
@@ -163,7 +233,7 @@ long Simulation<D>::fastest_point() const {
   double top = -1.0;
   for (const auto& body : points_.bodies) {
     const double c =
-        materials_[body.material]->max_signal_speed(points_, body.begin, body.end, grid_.cell());
+        materials_[body.material]->max_signal_speed(points_, body.begin, body.end, grid().cell());
     for (long p = body.begin; p < body.end; ++p) {
       const double s = c + points_.velocity[p].norm();
       if (s > top) top = s, fastest = p;
@@ -175,7 +245,7 @@ long Simulation<D>::fastest_point() const {
 template <int D>
 double Simulation<D>::time_step(double signal_speed) const {
   double dt = settings_.fixed_dt;
-  if (dt <= 0.0) dt = settings_.cfl_fraction * grid_.cell() / signal_speed;
+  if (dt <= 0.0) dt = settings_.cfl_fraction * grid().cell() / signal_speed;
   const double remaining = settings_.end_time - time_;
   // Land on the end time instead of overshooting it by a fraction of a step.
   if (remaining > 0.0 && remaining < dt * (1.0 + 1e-9)) dt = remaining;
@@ -187,43 +257,23 @@ double Simulation<D>::max_signal_speed() const {
   double wave = 0.0;
   for (const auto& body : points_.bodies)
     wave = std::max(wave, materials_[body.material]->max_signal_speed(points_, body.begin, body.end,
-                                                                      grid_.cell()));
+                                                                      grid().cell()));
   return wave + max_speed_;
 }
 
 template <int D>
 std::size_t Simulation<D>::memory_estimate_bytes() const {
-  // Per point: position, velocity, affine, mass/volume/density/energy, stress, strain, body id, the
-  // velocity-gradient scratch and the stencil. Per node: five fields, plus one private
-  // scatter copy of mass, momentum and force per extra thread.
-  const std::size_t per_point = sizeof(Vec<D>) * 2 + sizeof(Mat<D>) * 2 + 4 * sizeof(double) +
-                                2 * sizeof(Sym<D>) + sizeof(int) + sizeof(double) +
+  // Per point: the common columns, the declared ones, the velocity-gradient scratch (and the
+  // hoop rate) and the stencil. Per node: the grid fields, plus one private scatter copy of
+  // mass, momentum and force per extra thread.
+  const std::size_t per_point = sizeof(Vec<D>) * 2 + 3 * sizeof(double) + sizeof(Sym<D>) +
+                                sizeof(int) + points_.columns.bytes_per_point() + sizeof(Mat<D>) +
+                                (hoop_rate_.empty() ? 0 : sizeof(double)) +
                                 transfer_->stencil_bytes();
-  const std::size_t per_node = sizeof(double) + 4 * sizeof(Vec<D>);
   const std::size_t per_copy = sizeof(double) + 2 * sizeof(Vec<D>);
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
-  const std::size_t grids = 1 + (fields_ ? points_.bodies.size() : 0);  // contact: one per body
   return per_point * points_.size() +
-         grid_.node_count() * (grids * per_node + (threads - 1) * per_copy);
-}
-
-template <int D>
-void Simulation<D>::update_materials(double dt) {
-  const long bad =
-      fields_ ? fields_->point_kinematics(*transfer_, dt, points_, velocity_gradient_, hoop_rate_)
-              : transfer_->point_kinematics(grid_, dt, points_, velocity_gradient_, hoop_rate_);
-  if (bad >= 0) fail(bad, "non-positive or non-finite density");
-  if (!cell_density_ranges_.empty())  // fluids with cell densities (thesis eq 4.6)
-    cell_quadratic_density(grid_, settings_.kinematics == Kinematics::axisymmetric,
-                           cell_density_ranges_, points_);
-  update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
-  for (const auto& body : points_.bodies) {
-    const auto& material = *materials_[body.material];
-    material.update(
-        {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid_.cell()});
-    const long invalid = material.first_invalid_point(points_, body.begin, body.end);
-    if (invalid >= 0) fail(invalid, "non-finite or negative specific internal energy");
-  }
+         grid().node_count() * (fields_.bytes_per_node() + (threads - 1) * per_copy);
 }
 
 template <int D>
@@ -239,7 +289,7 @@ SystemState<D> Simulation<D>::state() const {
     gravitational -= m * gravity_.dot(points_.position[p]);
     for (int d = 0; d < D; ++d) momentum[d] += m * points_.velocity[p][d];
   }
-  s.kinetic = kinetic + transfer_->affine_kinetic_energy(points_, grid_);
+  s.kinetic = kinetic + transfer_->affine_kinetic_energy(points_, grid());
   s.gravitational = gravitational;
   for (int d = 0; d < D; ++d) s.momentum[d] = momentum[d];
   for (const auto& body : points_.bodies) {

@@ -1,6 +1,7 @@
 #pragma once
-//! Simulation<D>: owns the grid, the points, the materials and the transfers, and advances
-//! them one explicit MPM step at a time (thesis §3 and §5.3; IJNME 1999 §2.2).
+//! Simulation<D>: owns the grid fields, the points, the materials, the transfers and the
+//! hooks, and advances them one explicit MPM step at a time (thesis §3 and §5.3; IJNME 1999
+//! §2.2). The step is the named stages of DESIGN.md; the update scheme orders stages 3–7.
 
 #include <memory>
 #include <string>
@@ -9,18 +10,14 @@
 #include "pellicle/core/types.hpp"
 #include "pellicle/mpm/contact/contact_model.hpp"
 #include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/grid_fields.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/particles.hpp"
+#include "pellicle/mpm/scheme.hpp"
+#include "pellicle/mpm/step_hook.hpp"
 #include "pellicle/mpm/transfer.hpp"
 
 namespace pellicle {
-
-//! When the stress is updated relative to the grid solve.
-enum class UpdateScheme {
-  usf,   //!< update stress first, from the velocity mapped at the start of the step
-  usl,   //!< update stress last, from the Lagrangian grid velocity
-  musl,  //!< update stress last, from the convected (remapped) velocity — the seeds' scheme
-};
 
 struct SimulationSettings {
   UpdateScheme scheme = UpdateScheme::musl;
@@ -41,10 +38,7 @@ struct SystemState {
   double total() const { return kinetic + strain + internal + gravitational; }
 };
 
-template <int D>
-class Simulation;
-
-//! Called after every step (output writers, probes).
+//! Called after every step (output writers, probes, progress).
 template <int D>
 class StepObserver {
  public:
@@ -53,8 +47,11 @@ class StepObserver {
 };
 
 template <int D>
-class Simulation {
+class Simulation final : private Stages {
  public:
+  //! Declares the columns the materials and the transfer need, and settles the stress of
+  //! models whose stress follows from their state. Rigid materials' bodies become a
+  //! RigidBodies hook. Throws SetupError for parts that do not fit together.
   Simulation(SimulationSettings settings, Grid<D> grid, Particles<D> points,
              std::vector<std::unique_ptr<Material<D>>> materials,
              std::unique_ptr<Transfer<D>> transfer, Vec<D> gravity);
@@ -66,14 +63,17 @@ class Simulation {
   bool finished() const;
 
   //! Use a contact model (each body in its own grid field); without one every body moves
-  //! in the single centre-of-mass field.
+  //! in the single centre-of-mass field. Throws SetupError with the USF scheme.
   void set_contact(std::unique_ptr<ContactModel<D>> model);
   //! The contact model, or null (single centre-of-mass field).
-  const ContactModel<D>* contact() const { return contact_.get(); }
+  const ContactModel<D>* contact() const { return contact_; }
   //! Total contact force on each body in the last step; null without a contact model.
   const std::vector<Vec<D>>* contact_forces() const {
-    return fields_ ? &fields_->contact_force() : nullptr;
+    return contact_ ? &contact_->contact_forces() : nullptr;
   }
+  //! Add a hook (boundary condition, contact, …) acting at the step's named points.
+  void add_hook(std::unique_ptr<StepHook<D>> hook);
+  const std::vector<std::unique_ptr<StepHook<D>>>& hooks() const { return hooks_; }
 
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
   void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
@@ -92,36 +92,53 @@ class Simulation {
   std::size_t memory_estimate_bytes() const;
 
   const SimulationSettings& settings() const { return settings_; }
-  const Grid<D>& grid() const { return grid_; }
+  //! The centre-of-mass grid (every body's in a single-field run).
+  const Grid<D>& grid() const { return fields_.centre_of_mass(); }
+  GridFields<D>& fields() { return fields_; }
+  const GridFields<D>& fields() const { return fields_; }
   const Particles<D>& points() const { return points_; }
   Particles<D>& points() { return points_; }
+  Transfer<D>& transfer() { return *transfer_; }
   const Material<D>& material(int index) const { return *materials_[index]; }
   int material_count() const { return static_cast<int>(materials_.size()); }
   const Vec<D>& gravity() const { return gravity_; }
 
+  //! Continue from a saved state: time, step count and the largest point speed (the points'
+  //! and hooks' state are restored by the checkpoint reader).
+  void restore_clock(double time, long step, double last_dt, double max_speed);
+
  private:
-  void update_materials(double dt);
+  // Stages 3–7 (scheme.hpp), in the order the scheme calls them.
+  void to_grid(bool forces) override;
+  void grid_velocities() override;
+  void forces_to_grid() override;
+  void grid(double dt) override;
+  void to_points(double dt) override;
+  void remap(double dt) override;
+  void materials(double dt) override;
+
+  double time_step();       // stage 1, with the CFL check
+  void stencils();          // stage 2
+  void observe(double dt);  // stage 8
   void update_frames();
-  void prescribe_rigid_nodes();
-  void restore_rigid_velocities();
   double time_step(double signal_speed) const;
   long fastest_point() const;  //!< point with the largest c + |v| (for CFL failures)
   [[noreturn]] void fail(long point, const std::string& what) const;
 
   SimulationSettings settings_;
-  Grid<D> grid_;
+  GridFields<D> fields_;
   Particles<D> points_;
   std::vector<std::unique_ptr<Material<D>>> materials_;
   std::unique_ptr<Transfer<D>> transfer_;
-  std::unique_ptr<ContactModel<D>> contact_;
-  std::unique_ptr<BodyFields<D>> fields_;  //!< per-body grids, only with a contact model
+  std::unique_ptr<Scheme> scheme_;
+  std::vector<std::unique_ptr<StepHook<D>>> hooks_;
+  ContactModel<D>* contact_ = nullptr;  //!< one of hooks_, or null
   Vec<D> gravity_;
   std::vector<StepObserver<D>*> observers_;
 
-  bool has_rigid_bodies_ = false;
-  std::vector<Vec<D>> rigid_velocity_;  //!< per body: the prescribed velocity of rigid ones
   //! Point ranges of fluids whose densities come from cell densities.
   std::vector<std::pair<long, long>> cell_density_ranges_;
+  Column<Vec<D>> normal_, tangent_;  //!< membrane frames, when a material declares them
   std::vector<Mat<D>> velocity_gradient_;
   std::vector<double> hoop_rate_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;

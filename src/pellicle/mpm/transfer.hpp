@@ -48,6 +48,9 @@ class Transfer {
  public:
   virtual ~Transfer() = default;
 
+  //! Declare the per-point columns the velocity update keeps (APIC: the affine velocity).
+  virtual void declare_columns(Particles<D>& points) = 0;
+
   //! Kinetic energy of the APIC affine velocity field, Σ_p ½ m_p Σ_d D_p,dd |C_p e_d|², with
   //! D_p = Σ_i N_i (x_i − x_p)(x_i − x_p)ᵀ the kernel's inertia at the current position
   //! (Jiang et al. 2015); zero for the other velocity updates.
@@ -66,7 +69,8 @@ class Transfer {
   virtual void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
                        bool forces, PointRange range = {}) = 0;
   //! Scatter only the forces onto a grid whose mass and momentum are already mapped (USF).
-  virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) = 0;
+  virtual void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
+                              PointRange range = {}) = 0;
 
   //! Stage `to_points`: move points with the Lagrangian grid velocity and update their
   //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves

@@ -21,9 +21,14 @@ class TransferImpl final : public Transfer<D> {
   TransferImpl(const TransferOptions& options, Kernel kernel)
       : options_(options), kernel_(kernel) {}
 
+  void declare_columns(Particles<D>& points) override {
+    if (apic()) affine_ = points.template declare<Mat<D>>({"affine", "1/s", false, true});
+  }
+
   double affine_kinetic_energy(const Particles<D>& points, const Grid<D>& grid) const override {
     if (!apic()) return 0.0;
     const long n = points.size();
+    const auto& affine = points[affine_];
     const double h = grid.cell();
     double energy = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : energy)
@@ -36,7 +41,7 @@ class TransferImpl final : public Transfer<D> {
         double inertia = 0.0;  // D_dd / h²: tensor-product kernels give a diagonal D
         for (int a = 0; a < Kernel::width; ++a)
           inertia += w[a] * (first + a - xi[d]) * (first + a - xi[d]);
-        e += inertia * points.affine[p].col(d).squaredNorm();
+        e += inertia * affine[p].col(d).squaredNorm();
       }
       energy += 0.5 * points.mass[p] * h * h * e;
     }
@@ -72,9 +77,10 @@ class TransferImpl final : public Transfer<D> {
     }
   }
 
-  void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid) override {
+  void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
+                      PointRange range) override {
     zero(grid.force);
-    scatter<false, true, false>(points, gravity, grid, {});
+    scatter<false, true, false>(points, gravity, grid, range);
   }
 
   double to_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
@@ -85,6 +91,7 @@ class TransferImpl final : public Transfer<D> {
                          : options_.update == VelocityUpdate::blend ? options_.flip_fraction
                                                                     : 0.0;
     const bool apic_update = apic();
+    Mat<D>* affine_out = apic_update ? points[affine_].data() : nullptr;
     const double h = grid.cell();
     const double inertia_scale =
         Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
@@ -114,7 +121,7 @@ class TransferImpl final : public Transfer<D> {
       Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
       points.position[p] = x;
       points.velocity[p] = v;
-      if (apic_update) points.affine[p] = affine;
+      if (apic_update) affine_out[p] = affine;
       if (!grid.contains(x) || !v.allFinite()) first_bad = std::min(first_bad, p);
       max_speed = std::max(max_speed, v.norm());
     }
@@ -208,6 +215,7 @@ class TransferImpl final : public Transfer<D> {
     const auto& strides = grid.strides();
     const double h = grid.cell();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
+    const Mat<D>* affine = Affine ? points[affine_].data() : nullptr;
     buffers_.prepare(grid);
 #pragma omp parallel
     {
@@ -235,7 +243,7 @@ class TransferImpl final : public Transfer<D> {
             if constexpr (Affine) {
               Vec<D> dx;
               for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-              out.momentum[node] += (N * m) * (points.affine[p] * dx);
+              out.momentum[node] += (N * m) * (affine[p] * dx);
             }
           }
           if constexpr (WithForce) {
@@ -261,6 +269,7 @@ class TransferImpl final : public Transfer<D> {
   }
 
   TransferOptions options_;
+  Column<Mat<D>> affine_;  //!< APIC only: C_p
   Kernel kernel_;
   std::vector<Stencil<D, Kernel>> stencils_;
   ScatterBuffers<D> buffers_;

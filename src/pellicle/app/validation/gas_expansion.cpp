@@ -68,9 +68,10 @@ Outcome gas_expansion(Resolution) {
                   {"x", "y", "pressure", "internal energy"},
                   {}};
     const auto& p = run.simulation->points();
+    const auto& energy = p.named<double>("internal_energy");
     for (long i = 0; i < p.size(); ++i)
       points.rows.push_back({p.position[i].x(), p.position[i].y(),
-                             (kGamma - 1.0) * p.density[i] * p.energy[i], p.energy[i]});
+                             (kGamma - 1.0) * p.density[i] * energy[i], energy[i]});
     out.series.push_back(std::move(points));
   }
   out.table = table;

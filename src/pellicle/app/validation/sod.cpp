@@ -30,10 +30,11 @@ struct Sample {
 
 std::vector<Sample> samples(const Simulation<2>& s) {
   const auto& pts = s.points();
+  const auto& energy = pts.named<double>("internal_energy");
   std::vector<Sample> out;
   for (long i = 0; i < pts.size(); ++i)
     out.push_back({pts.position[i].x(), pts.density[i], pts.velocity[i].x(),
-                   (kGamma - 1.0) * pts.density[i] * pts.energy[i], pts.energy[i], pts.volume[i]});
+                   (kGamma - 1.0) * pts.density[i] * energy[i], energy[i], pts.volume[i]});
   std::sort(out.begin(), out.end(), [](const Sample& a, const Sample& b) { return a.x < b.x; });
   return out;
 }

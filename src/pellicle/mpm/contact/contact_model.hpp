@@ -1,7 +1,8 @@
 #pragma once
 //! Contact models: how bodies that share grid nodes interact. Without one, every body moves
 //! in the single centre-of-mass velocity field (automatic no-slip, no-penetration contact,
-//! IJNME §2). A model gives each body its own field (BodyFields) and decides, node by node,
+//! IJNME §2). A model is a step hook: it gives each body its own grid field (GridFields)
+//! and, after each grid update, decides node by node (SharedNodes)
 //! which velocity each body takes: the contact-release criteria of York (IJNME eq 26,
 //! thesis eqs 9.7–9.9) or Coulomb friction (Bardenhagen, Brackbill & Sulsky 2000).
 //! Chosen by name in the case's [contact] table (registry.cpp).
@@ -11,20 +12,27 @@
 #include <vector>
 
 #include "pellicle/core/parameters.hpp"
-#include "pellicle/mpm/contact/body_fields.hpp"
+#include "pellicle/mpm/contact/shared_nodes.hpp"
+#include "pellicle/mpm/step_hook.hpp"
 
 namespace pellicle {
 
 template <int D>
-class ContactModel {
+class ContactModel : public StepHook<D> {
  public:
-  virtual ~ContactModel() = default;
+  bool needs_body_fields() const override { return true; }
   //! Set each body's velocity at every node it shares with others: after the grid solve
   //! (Lagrangian pass) and again on the convected velocities of the MUSL remap.
-  virtual void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass,
-                       const Particles<D>& points, double dt, ContactPass pass) const = 0;
+  void after_grid_update(Simulation<D>& simulation, GridPass pass, double dt) override;
   //! One line for run summaries, e.g. "release, criterion both".
   virtual std::string describe() const = 0;
+  //! Total contact force on each body in the last step.
+  const std::vector<Vec<D>>& contact_forces() const { return shared_.contact_force(); }
+
+ protected:
+  virtual void resolve(GridFields<D>& fields, const Particles<D>& points, double dt,
+                       GridPass pass) = 0;
+  SharedNodes<D> shared_;
 };
 
 //! Builds a model from the [contact] table; `body_names` lets it refer to bodies.

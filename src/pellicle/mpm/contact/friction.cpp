@@ -26,9 +26,9 @@ class Friction final : public ContactModel<D> {
     return std::isinf(mu_) ? "friction, no slip" : text;
   }
 
-  void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
-               double dt, ContactPass pass) const override {
-    fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this](SharedNode<D>& node) {
+  void resolve(GridFields<D>& fields, const Particles<D>& points, double dt,
+               GridPass pass) override {
+    this->shared_.sweep(fields, points, dt, pass, [this](SharedNode<D>& node) {
       use_common_normal(node);
       for (int k = 0; k < node.count; ++k) {
         const Vec<D>& n = node.normal[k];

@@ -37,17 +37,18 @@ class Release final : public ContactModel<D> {
            master_name_ + "'" + (hysteresis_ ? ", state kept unless all bodies agree" : "");
   }
 
-  void resolve(BodyFields<D>& fields, const Grid<D>& centre_of_mass, const Particles<D>& points,
-               double dt, ContactPass pass) const override {
+  void resolve(GridFields<D>& fields, const Particles<D>& points, double dt,
+               GridPass pass) override {
     // The decision is taken once per step, on the Lagrangian pass, and kept for the
     // convected velocities, so bodies that moved together also deform together.
-    if (pass == ContactPass::lagrangian) {
+    const long nodes = fields.centre_of_mass().node_count();
+    if (pass == GridPass::lagrangian) {
       previous_.swap(released_);
-      previous_.resize(centre_of_mass.node_count(), kNotShared);
-      released_.assign(centre_of_mass.node_count(), kNotShared);
+      previous_.resize(nodes, kNotShared);
+      released_.assign(nodes, kNotShared);
     }
-    fields.sweep_shared_nodes(centre_of_mass, points, dt, pass, [this, pass](SharedNode<D>& node) {
-      if (pass == ContactPass::lagrangian) released_[node.index] = decide(node);
+    this->shared_.sweep(fields, points, dt, pass, [this, pass](SharedNode<D>& node) {
+      if (pass == GridPass::lagrangian) released_[node.index] = decide(node);
       if (released_[node.index] != kReleased)
         for (int k = 0; k < node.count; ++k) node.in_contact[k] = true;
     });
@@ -104,8 +105,8 @@ class Release final : public ContactModel<D> {
   int master_;
   std::string master_name_;
   bool hysteresis_;
-  mutable std::vector<char> released_;  //!< per node, this step's state
-  mutable std::vector<char> previous_;  //!< per node, last step's state
+  std::vector<char> released_;  //!< per node, this step's state
+  std::vector<char> previous_;  //!< per node, last step's state
 };
 
 }  // namespace

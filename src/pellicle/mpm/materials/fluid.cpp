@@ -17,8 +17,23 @@ Fluid<D, Eos>::Fluid(Kinematics kinematics, double density, Eos eos, FluidViscos
       from_cells_(density_from_cells) {}
 
 template <int D, class Eos>
+void Fluid<D, Eos>::declare_columns(Particles<D>& points) {
+  Material<D>::declare_columns(points);  // the strain: tr ε drives the barotropic law (eq 6.1)
+  energy_ = points.template declare<double>({"internal_energy", "J/kg", true, true});
+}
+
+template <int D, class Eos>
+void Fluid<D, Eos>::initialise(Particles<D>& points, long begin, long end,
+                               const InitialState<D>& state) const {
+  Material<D>::initialise(points, begin, end, state);
+  for (long p = begin; p < end; ++p) points[energy_][p] = state.internal_energy;
+}
+
+template <int D, class Eos>
 void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
   auto& pts = step.points;
+  auto& strain = pts[this->strain_];
+  auto& energy = pts[energy_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double gruneisen = eos_.gruneisen();
   const double inv_dt = step.dt > 0.0 ? 1.0 / step.dt : 0.0;
@@ -29,10 +44,10 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
     const double dv = trace<D>(de);  // ΔV/V over the step
     const double rho_new = pts.density[p];
     const double rho_old = rho_new * (1.0 + dv);  // continuity (eq 4.7) run backwards
-    const double strain_old = trace<D>(pts.strain[p]);
-    const double e_old = pts.energy[p];
+    const double strain_old = trace<D>(strain[p]);
+    const double e_old = energy[p];
     const double p_old = eos_.cold_pressure(rho_old, strain_old) + gruneisen * rho_old * e_old;
-    pts.strain[p] += de;
+    strain[p] += de;
 
     // Viscous stress 2μ D' and artificial viscosity q at the new rate (eqs 4.1, 4.11–4.12).
     Sym<D> deviatoric = de;
@@ -48,7 +63,7 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
     const double p_cold = eos_.cold_pressure(rho_new, strain_old + dv);
     const double e_new = (e_old + dissipation - 0.5 * (p_old + p_cold) * specific_dv) /
                          (1.0 + 0.5 * gruneisen * rho_new * specific_dv);
-    pts.energy[p] = e_new;
+    energy[p] = e_new;
     const double p_new = p_cold + gruneisen * rho_new * e_new;
 
     Sym<D> sigma = viscous;
@@ -81,10 +96,11 @@ template <int D, class Eos>
 long Fluid<D, Eos>::first_invalid_point(const Particles<D>& points, long begin, long end) const {
   // A gas's pressure is Γ ρ e: negative energy would make it pull.
   const bool thermal = eos_.gruneisen() > 0.0;
+  const auto& energy = points[energy_];
   long first = end;
 #pragma omp parallel for reduction(min : first) schedule(static)
   for (long p = begin; p < end; ++p) {
-    const double e = points.energy[p];
+    const double e = energy[p];
     if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);
   }
   return first < end ? first : -1;
@@ -92,10 +108,20 @@ long Fluid<D, Eos>::first_invalid_point(const Particles<D>& points, long begin, 
 
 template <int D, class Eos>
 double Fluid<D, Eos>::internal_energy(const Particles<D>& points, long begin, long end) const {
+  const auto& e = points[energy_];
   double energy = 0.0;
 #pragma omp parallel for reduction(+ : energy) schedule(static)
-  for (long p = begin; p < end; ++p) energy += points.mass[p] * points.energy[p];
+  for (long p = begin; p < end; ++p) energy += points.mass[p] * e[p];
   return energy;
+}
+
+template <int D, class Eos>
+void Fluid<D, Eos>::history_values(const Particles<D>& points, long begin, long end,
+                                   std::vector<double>& out) const {
+  double volume = 0.0;
+  for (long p = begin; p < end; ++p) volume += points.volume[p];
+  out.push_back(mean_pressure(points, begin, end));
+  out.push_back(volume);
 }
 
 template <int D, class Eos>

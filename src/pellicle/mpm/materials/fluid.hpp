@@ -43,24 +43,38 @@ class Fluid final : public Material<D> {
   Fluid(Kinematics kinematics, double density, Eos eos, FluidViscosity viscosity,
         bool density_from_cells);
 
+  void declare_columns(Particles<D>& points) override;
+  void initialise(Particles<D>& points, long begin, long end,
+                  const InitialState<D>& state) const override;
   void update(const MaterialStep<D>& step) const override;
   double max_signal_speed(const Particles<D>& points, long begin, long end,
                           double cell) const override;
   //! The compression work is internal energy here: no separate stored strain energy.
   double strain_energy(const Particles<D>&, long, long) const override { return 0.0; }
   double internal_energy(const Particles<D>& points, long begin, long end) const override;
-  double mean_pressure(const Particles<D>& points, long begin, long end) const override;
+  //! Volume-weighted mean equation-of-state pressure of the points, Σ V p / Σ V.
+  double mean_pressure(const Particles<D>& points, long begin, long end) const;
   Sym<D> stress_from_strain(const Sym<D>& strain) const override;
   double density() const override { return density_; }
   bool is_fluid() const override { return true; }
+  bool stress_from_state() const override { return true; }
+  //! history.csv: `<body>.pressure` (mean_pressure) and `<body>.volume` (Σ V).
+  std::vector<std::string> history_names() const override { return {"pressure", "volume"}; }
+  void history_values(const Particles<D>& points, long begin, long end,
+                      std::vector<double>& out) const override;
+  std::string flip_caution() const override {
+    return "a fluid moved by FLIP, whose ringing instability (Brackbill 1988) grows noise in "
+           "slow flow at a rate of about c/h; velocity_update = \"apic\" with a B-spline "
+           "kernel, or \"pic\", avoids it (docs/theory/gas.md)";
+  }
   bool density_from_cells() const override { return from_cells_; }
   long first_invalid_point(const Particles<D>& points, long begin, long end) const override;
 
   //! Equation-of-state pressure of point p (without the artificial viscosity).
   double pressure(const Particles<D>& points, long p) const {
     const double rho = points.density[p];
-    return eos_.cold_pressure(rho, trace<D>(points.strain[p])) +
-           eos_.gruneisen() * rho * points.energy[p];
+    return eos_.cold_pressure(rho, trace<D>(points[this->strain_][p])) +
+           eos_.gruneisen() * rho * points[energy_][p];
   }
   //! Artificial viscosity q at density ρ, sound speed c, volumetric rate tr D, cell h.
   double artificial_viscosity(double rho, double c, double volumetric_rate, double h) const {
@@ -71,6 +85,7 @@ class Fluid final : public Material<D> {
 
  private:
   double density_;
+  Column<double> energy_;  //!< specific internal energy e, J/kg
   Eos eos_;
   FluidViscosity viscosity_;
   bool from_cells_;

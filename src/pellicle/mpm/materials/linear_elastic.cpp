@@ -43,6 +43,7 @@ Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
 template <int D>
 void LinearElastic<D>::update(const MaterialStep<D>& step) const {
   auto& pts = step.points;
+  auto& strain = pts[this->strain_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
 #pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
@@ -50,7 +51,7 @@ void LinearElastic<D>::update(const MaterialStep<D>& step) const {
     Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
     const Sym<D> ds = stress_increment(de);
     pts.stress[p] = jaumann_rotate<D>(pts.stress[p], L, step.dt) + ds;
-    pts.strain[p] += de;
+    strain[p] += de;
   }
 }
 

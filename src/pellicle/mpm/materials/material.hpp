@@ -3,6 +3,7 @@
 //! (never one virtual call per point), from the velocity gradient the grid gives them.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,11 +27,36 @@ struct MaterialStep {
   double cell = 0.0;  //!< grid cell size h (artificial viscosity length, thesis eq 4.12)
 };
 
+//! The state a body's points start from (case keys initial_strain, initial_stress,
+//! internal_energy).
+template <int D>
+struct InitialState {
+  Sym<D> strain = Sym<D>::Zero();
+  std::optional<Sym<D>> stress;  //!< given directly; otherwise the stress of `strain`
+  double internal_energy = 0.0;  //!< specific internal energy e (fluids)
+};
+
+//! A quantity a material computes for snapshots from its columns (one value per point).
+struct SnapshotField {
+  std::string name;
+  int components = 1;
+};
+
 template <int D>
 class Material {
  public:
   explicit Material(Kinematics kinematics) : kinematics_(kinematics) {}
   virtual ~Material() = default;
+
+  //! Declare the per-point columns the model reads and writes (point_columns.hpp) and keep
+  //! their handles. Called once, before points are added or a run starts; a column another
+  //! model declared under the same name is shared.
+  virtual void declare_columns(Particles<D>& points);
+  //! Set the starting state of points [begin, end) of a body: the stress (given, or from the
+  //! strain) and the declared columns. Models whose stress follows from their state
+  //! (membranes, fluids) settle it at the first zero step instead.
+  virtual void initialise(Particles<D>& points, long begin, long end,
+                          const InitialState<D>& state) const;
 
   //! Stress and strain update of the points over one step (objective rate, see each model).
   virtual void update(const MaterialStep<D>& step) const = 0;
@@ -43,9 +69,6 @@ class Material {
   virtual double strain_energy(const Particles<D>& points, long begin, long end) const = 0;
   //! Internal (thermal and compression) energy Σ m e of fluid points; 0 for solids.
   virtual double internal_energy(const Particles<D>&, long, long) const { return 0.0; }
-  //! Volume-weighted mean pressure of the points, Σ V p / Σ V. Fluids report their
-  //! equation-of-state pressure; solids the mean normal stress −tr σ / 3.
-  virtual double mean_pressure(const Particles<D>& points, long begin, long end) const;
   //! Stress produced by a given strain from the unstressed state (initial strain input).
   virtual Sym<D> stress_from_strain(const Sym<D>& strain) const = 0;
   //! Reference mass density of the material.
@@ -62,8 +85,28 @@ class Material {
   //! First point of [begin, end) whose state the model cannot continue from (a fluid's
   //! non-finite or, for a gas, negative internal energy), or −1.
   virtual long first_invalid_point(const Particles<D>&, long, long) const { return -1; }
+  //! The stress follows from the points' state (frames, density, energy), not from the
+  //! stress before: it is settled by a zero step before the first step.
+  virtual bool stress_from_state() const { return false; }
+
+  //! Per-body history.csv columns of this model (`<body>.<name>`), and their values over
+  //! the body's points [begin, end), in the same order.
+  virtual std::vector<std::string> history_names() const { return {}; }
+  virtual void history_values(const Particles<D>&, long, long, std::vector<double>&) const {}
+  //! Quantities computed for snapshots from the model's columns, and their values for
+  //! points [begin, end) written to `out` (components per point, point `begin` first).
+  virtual std::vector<SnapshotField> snapshot_fields() const { return {}; }
+  virtual void snapshot_values(int /*field*/, const Particles<D>&, long, long, double*) const {}
+  //! A warning for `pellicle check` when this model's points are moved by FLIP; empty when
+  //! FLIP suits it.
+  virtual std::string flip_caution() const { return {}; }
 
   Kinematics kinematics() const { return kinematics_; }
+
+ protected:
+  //! The accumulated small strain Σ Δε, shared by the models that keep it; declared by
+  //! declare_columns' default.
+  Column<Sym<D>> strain_;
 
  private:
   Kinematics kinematics_;
@@ -86,13 +129,18 @@ template <int D>
 const std::vector<MaterialModel<D>>& material_models();
 
 template <int D>
-double Material<D>::mean_pressure(const Particles<D>& points, long begin, long end) const {
-  double pv = 0.0, v = 0.0;
+void Material<D>::declare_columns(Particles<D>& points) {
+  strain_ = points.template declare<Sym<D>>({column_names::strain, "1", true, true});
+}
+
+template <int D>
+void Material<D>::initialise(Particles<D>& points, long begin, long end,
+                             const InitialState<D>& state) const {
+  const Sym<D> stress = state.stress ? *state.stress : stress_from_strain(state.strain);
   for (long p = begin; p < end; ++p) {
-    pv -= points.volume[p] * trace<D>(points.stress[p]) / 3.0;
-    v += points.volume[p];
+    points.stress[p] = stress;
+    if (strain_.valid()) points[strain_][p] = state.strain;
   }
-  return v > 0.0 ? pv / v : 0.0;
 }
 
 }  // namespace pellicle

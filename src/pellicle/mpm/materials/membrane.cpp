@@ -72,16 +72,41 @@ Mat3 membrane_axes(const Vec3& t, const Vec3& n) {
 }
 
 template <int D>
+void Membrane<D>::declare_columns(Particles<D>& points) {
+  Material<D>::declare_columns(points);
+  normal_ = points.template declare<Vec<D>>({column_names::normal, "1", true, true});
+  tangent_ = points.template declare<Vec<D>>({column_names::tangent, "1", true, true});
+}
+
+template <int D>
+void Membrane<D>::snapshot_values(int field, const Particles<D>& points, long begin, long end,
+                                  double* out) const {
+  // Strain (field 0) or stress (field 1) in the local axes: 11 tangent, 22 second
+  // in-surface direction, 12 in-surface shear.
+  const auto& tensor = field == 0 ? points[this->strain_] : points.stress;
+  for (long p = begin; p < end; ++p, out += 3) {
+    const Mat3 Q = membrane_axes(points[tangent_][p], points[normal_][p]);
+    const Mat3 local = Q * to_mat3<D>(tensor[p]) * Q.transpose();
+    out[0] = local(0, 0);
+    out[1] = local(1, 1);
+    out[2] = local(0, 1);
+  }
+}
+
+template <int D>
 void Membrane<D>::update(const MaterialStep<D>& step) const {
   auto& pts = step.points;
+  auto& strain = pts[this->strain_];
+  const auto& normal = pts[normal_];
+  const auto& tangent = pts[tangent_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double nu = poisson_;
 #pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
     const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
-    const Mat3 Q = membrane_axes(pts.tangent[p], pts.normal[p]);
-    const Mat3 local = Q * to_mat3<D>(pts.strain[p] + de) * Q.transpose();  // thesis eq 5.3
+    const Mat3 Q = membrane_axes(tangent[p], normal[p]);
+    const Mat3 local = Q * to_mat3<D>(strain[p] + de) * Q.transpose();  // thesis eq 5.3
     const double e11 = local(0, 0), e12 = local(0, 1);
     double e22 = local(1, 1), s11, s22, s12;
     local_stress(e11, e22, e12, s11, s22, s12);
@@ -95,7 +120,7 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
     strain_local(0, 1) = strain_local(1, 0) = e12;
     strain_local(2, 2) = e33;
     pts.stress[p] = from_mat3<D>(Q.transpose() * stress_local * Q);
-    pts.strain[p] = from_mat3<D>(Q.transpose() * strain_local * Q);
+    strain[p] = from_mat3<D>(Q.transpose() * strain_local * Q);
   }
 }
 
@@ -108,10 +133,11 @@ double Membrane<D>::max_signal_speed(const Particles<D>& points, long begin, lon
 template <int D>
 double Membrane<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
   // ½ σ : ε V with the adjusted strain: the local law's energy (zero when slack).
+  const auto& strain = points[this->strain_];
   double energy = 0.0;
 #pragma omp parallel for reduction(+ : energy) schedule(static)
   for (long p = begin; p < end; ++p)
-    energy += 0.5 * points.volume[p] * contract<D>(points.stress[p], points.strain[p]);
+    energy += 0.5 * points.volume[p] * contract<D>(points.stress[p], strain[p]);
   return energy;
 }
 

@@ -43,6 +43,8 @@ class Membrane final : public Material<D> {
   Membrane(Kinematics kinematics, double density, double youngs_modulus, double poisson_ratio,
            MembraneLaw law, bool one_way);
 
+  //! The strain and the frame (normal, tangent) its body's estimator sets each step.
+  void declare_columns(Particles<D>& points) override;
   void update(const MaterialStep<D>& step) const override;
   double max_signal_speed(const Particles<D>& points, long begin, long end,
                           double cell) const override;
@@ -51,6 +53,13 @@ class Membrane final : public Material<D> {
   Sym<D> stress_from_strain(const Sym<D>& strain) const override;
   double density() const override { return density_; }
   bool is_membrane() const override { return true; }
+  bool stress_from_state() const override { return true; }
+  //! Strain and stress in the local axes (11, 22, 12).
+  std::vector<SnapshotField> snapshot_fields() const override {
+    return {{"membrane_strain", 3}, {"membrane_stress", 3}};
+  }
+  void snapshot_values(int field, const Particles<D>& points, long begin, long end,
+                       double* out) const override;
 
   //! The local law: in-surface strains (e11, e22, e12) to stresses (s11, s22, s12). With
   //! no stress allowed in direction 2' (strings; membranes of 2D plane-stress runs) e22 is
@@ -62,6 +71,7 @@ class Membrane final : public Material<D> {
 
  private:
   double density_, young_, poisson_;
+  Column<Vec<D>> normal_, tangent_;
   bool uniaxial_;  //!< law uniaxial, or a plane-stress law in a 2D plane-stress run
   bool one_way_;
 };

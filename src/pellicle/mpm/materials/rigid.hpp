@@ -17,6 +17,7 @@ template <int D>
 class Rigid final : public Material<D> {
  public:
   Rigid(Kinematics kinematics, double density) : Material<D>(kinematics), density_(density) {}
+  void declare_columns(Particles<D>&) override {}  //!< no state beyond position and velocity
   void update(const MaterialStep<D>&) const override {}
   double max_signal_speed(const Particles<D>&, long, long, double) const override { return 0.0; }
   double strain_energy(const Particles<D>&, long, long) const override { return 0.0; }

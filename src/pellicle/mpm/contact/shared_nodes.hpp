@@ -1,10 +1,9 @@
 #pragma once
-//! Per-body grid fields for contact models (IJNME §4.1, thesis A.1.3): each body's mass,
-//! momentum and force on its own copy of the grid (eqs 23–25 / 9.4–9.6), the centre-of-mass
-//! field as their sum (eqs 20–22 / 9.1–9.3), each body's colour function on cell centres
-//! (eq 27 / 9.10) whose gradient gives its outward normal at a node (eq 28 / 9.11), and the
-//! sweep over the nodes that two or more bodies share, where a contact model decides which
-//! velocity each body moves with.
+//! The nodes that two or more bodies share, as contact models see them (IJNME §4.1, thesis
+//! A.1.3): each body's own field at the node (GridFields with one field per body), each
+//! body's colour function on cell centres (eq 27 / 9.10) whose gradient gives its outward
+//! normal at a node (eq 28 / 9.11), and the sweep over the shared nodes where a contact rule
+//! decides which velocity each body moves with.
 
 #include <omp.h>
 
@@ -12,38 +11,41 @@
 #include <vector>
 
 #include "pellicle/mpm/cell_field.hpp"
-#include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/grid_fields.hpp"
 #include "pellicle/mpm/particles.hpp"
-#include "pellicle/mpm/transfer.hpp"
+#include "pellicle/mpm/step_hook.hpp"
 
 namespace pellicle {
 
-//! The bodies that share one node, as a contact rule sees them.
+//! The bodies that share one node, as a contact rule sees them. Sized once per sweep and
+//! thread for every body of the run, so any number of bodies may meet at a node.
 template <int D>
 struct SharedNode {
-  static constexpr int kMaxBodies = 8;  //!< more bodies at one node: the extra ones are left alone
-  long index = 0;                       //!< the grid node
+  explicit SharedNode(int bodies)
+      : body(bodies),
+        mass(bodies),
+        velocity(bodies),
+        mapped(bodies),
+        normal(bodies),
+        membrane(bodies),
+        in_contact(bodies) {}
+  long index = 0;  //!< the grid node
   int count = 0;
-  int body[kMaxBodies];
-  double mass[kMaxBodies];
-  Vec<D> velocity[kMaxBodies];  //!< each body's own new velocity; the rule overwrites it
+  std::vector<int> body;
+  std::vector<double> mass;
+  std::vector<Vec<D>> velocity;  //!< each body's own new velocity; the rule overwrites it
   //! Each body's velocity from its points' momentum, before the grid forces act (IJNME
   //! eq 25): the criteria compare these, free of the large accelerations of nodes that
   //! hold only a sliver of a body's mass.
-  Vec<D> mapped[kMaxBodies];
-  Vec<D> normal[kMaxBodies];  //!< outward unit normal of each body (zero where undefined)
-  bool membrane[kMaxBodies];  //!< membranes have outward normals on both sides
+  std::vector<Vec<D>> mapped;
+  std::vector<Vec<D>> normal;  //!< outward unit normal of each body (zero where undefined)
+  std::vector<char> membrane;  //!< membranes have outward normals on both sides
   //! Set by a rule for bodies that move with the centre-of-mass velocity here (IJNME
   //! eqs 20–22) instead of their own.
-  bool in_contact[kMaxBodies];
+  std::vector<char> in_contact;
   Vec<D> centre_of_mass;         //!< centre-of-mass new velocity
   Vec<D> centre_of_mass_mapped;  //!< centre-of-mass velocity from momentum (IJNME eq 22)
 };
-
-//! Which grid velocities a contact rule corrects: the Lagrangian ones after the grid solve
-//! (they move the points; their corrections are the contact forces), or the convected ones
-//! of the MUSL remap (they give the strain rates, so bodies in contact deform together).
-enum class ContactPass { lagrangian, convected };
 
 //! For two bodies at a node: one normal, opposite for each, so that corrections balance
 //! (Bardenhagen et al. 2000). It is the normal of a solid rather than a membrane (whose
@@ -59,55 +61,37 @@ void use_common_normal(SharedNode<D>& node) {
 }
 
 template <int D>
-class BodyFields {
+class SharedNodes {
  public:
-  BodyFields(const Grid<D>& grid, int bodies)
-      : grids_(bodies, grid), colour_(bodies), contact_force_(bodies, Vec<D>::Zero()) {}
-
-  int body_count() const { return static_cast<int>(grids_.size()); }
-  Grid<D>& body_grid(int b) { return grids_[b]; }
-  const Grid<D>& body_grid(int b) const { return grids_[b]; }
   //! Total contact force on each body in the last step (Σ over nodes of m ΔV/Δt).
   const std::vector<Vec<D>>& contact_force() const { return contact_force_; }
-
-  //! Stage `to_grid`: every body onto its own grid; the centre-of-mass grid is their sum.
-  void to_grid(Transfer<D>& transfer, const Particles<D>& points, const Vec<D>& gravity,
-               Grid<D>& centre_of_mass);
-  //! Stage `grid`: each body's Lagrangian velocity from its own mass, momentum and force.
-  void integrate(double dt);
-  //! Stage `to_points`, body by body in its own field. Returns the largest point speed.
-  double to_points(Transfer<D>& transfer, double dt, Particles<D>& points, PointFailure& failure);
-  //! Stage `remap` (MUSL), body by body; the centre-of-mass grid gets their sum.
-  void remap(Transfer<D>& transfer, const Particles<D>& points, Grid<D>& centre_of_mass);
-  //! Velocity gradients and continuity, each body from its own field. Returns the first bad
-  //! point or −1.
-  long point_kinematics(Transfer<D>& transfer, double dt, Particles<D>& points,
-                        std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate);
 
   //! Apply `rule(SharedNode&)` at every node shared by two or more bodies: it sets the
   //! velocity each body moves with there. The bodies' fields follow, and in the Lagrangian
   //! pass their FLIP increments and the contact forces.
   template <class Rule>
-  void sweep_shared_nodes(const Grid<D>& centre_of_mass, const Particles<D>& points, double dt,
-                          ContactPass pass, Rule&& rule);
+  void sweep(GridFields<D>& fields, const Particles<D>& points, double dt, GridPass pass,
+             Rule&& rule);
 
  private:
-  void colour_functions(const Particles<D>& points);
-  Vec<D> outward_normal(int body, long node) const;
+  void colour_functions(const GridFields<D>& fields, const Particles<D>& points);
+  Vec<D> outward_normal(const Grid<D>& grid, int body, long node) const;
 
-  std::vector<Grid<D>> grids_;
   std::vector<std::vector<double>> colour_;  //!< per body, on cell centres
   std::vector<Vec<D>> contact_force_;
 };
 
 template <int D>
 template <class Rule>
-void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Particles<D>& points,
-                                       double dt, ContactPass pass, Rule&& rule) {
-  const bool lagrangian = pass == ContactPass::lagrangian;
+void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, double dt,
+                           GridPass pass, Rule&& rule) {
+  const bool lagrangian = pass == GridPass::lagrangian;
   // Normals from the colour at the start of the step serve both passes.
-  if (lagrangian) colour_functions(points);
-  const int bodies = body_count();
+  if (lagrangian) colour_functions(fields, points);
+  const Grid<D>& centre_of_mass = fields.centre_of_mass();
+  const int bodies = fields.count();
+  std::vector<Grid<D>*> grids(bodies);
+  for (int b = 0; b < bodies; ++b) grids[b] = &fields.field(b);
   // Before the forces act: v^k = v − Δv (the convected pass has no forces).
   auto mapped = [lagrangian](const Grid<D>& g, long n) -> Vec<D> {
     return lagrangian ? Vec<D>(g.velocity[n] - g.velocity_change[n]) : g.velocity[n];
@@ -117,15 +101,17 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
 #pragma omp parallel
   {
     std::vector<Vec<D>> force(bodies, Vec<D>::Zero());
+    SharedNode<D> node(bodies);
 #pragma omp for schedule(static)
     for (long n = 0; n < nodes; ++n) {
-      SharedNode<D> node;
-      for (int b = 0; b < bodies && node.count < SharedNode<D>::kMaxBodies; ++b) {
-        if (!(grids_[b].mass[n] > 0.0)) continue;
+      node.count = 0;
+      for (int b = 0; b < bodies; ++b) {
+        const Grid<D>& g = *grids[b];
+        if (!(g.mass[n] > 0.0)) continue;
         node.body[node.count] = b;
-        node.mass[node.count] = grids_[b].mass[n];
-        node.velocity[node.count] = grids_[b].velocity[n];
-        node.mapped[node.count] = mapped(grids_[b], n);
+        node.mass[node.count] = g.mass[n];
+        node.velocity[node.count] = g.velocity[n];
+        node.mapped[node.count] = mapped(g, n);
         node.in_contact[node.count] = false;
         node.membrane[node.count] = points.bodies[b].frames != nullptr;
         ++node.count;
@@ -134,10 +120,11 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
       node.index = n;
       node.centre_of_mass = centre_of_mass.velocity[n];
       node.centre_of_mass_mapped = mapped(centre_of_mass, n);
-      for (int k = 0; k < node.count; ++k) node.normal[k] = outward_normal(node.body[k], n);
+      for (int k = 0; k < node.count; ++k)
+        node.normal[k] = outward_normal(*grids[node.body[k]], node.body[k], n);
       rule(node);
       for (int k = 0; k < node.count; ++k) {
-        Grid<D>& g = grids_[node.body[k]];
+        Grid<D>& g = *grids[node.body[k]];
         if (node.in_contact[k]) node.velocity[k] = node.centre_of_mass;
         if (lagrangian) {
           const Vec<D> change = node.velocity[k] - g.velocity[n];
@@ -156,7 +143,8 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
 #pragma omp critical
     for (int b = 0; b < bodies; ++b) contact_force_[b] += force[b];
   }
-  for (auto& g : grids_) {
+  for (Grid<D>* grid : grids) {
+    Grid<D>& g = *grid;
     g.constrain(g.velocity);
     g.mirror(g.velocity);
     if (!lagrangian) continue;
@@ -165,7 +153,7 @@ void BodyFields<D>::sweep_shared_nodes(const Grid<D>& centre_of_mass, const Part
   }
 }
 
-extern template class BodyFields<2>;
-extern template class BodyFields<3>;
+extern template class SharedNodes<2>;
+extern template class SharedNodes<3>;
 
 }  // namespace pellicle

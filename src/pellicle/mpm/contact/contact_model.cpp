@@ -1,0 +1,15 @@
+#include "pellicle/mpm/contact/contact_model.hpp"
+
+#include "pellicle/mpm/simulation.hpp"
+
+namespace pellicle {
+
+template <int D>
+void ContactModel<D>::after_grid_update(Simulation<D>& simulation, GridPass pass, double dt) {
+  resolve(simulation.fields(), simulation.points(), dt, pass);
+}
+
+template class ContactModel<2>;
+template class ContactModel<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,29 @@
+#include "pellicle/mpm/contact/shared_nodes.hpp"
+
+namespace pellicle {
+
+template <int D>
+void SharedNodes<D>::colour_functions(const GridFields<D>& fields, const Particles<D>& points) {
+  // Eq 27 / 9.10 with each point's colour its volume: the colour function is a smoothed
+  // volume of its body per cell (its scale does not matter, only its gradient's direction).
+  colour_.resize(fields.count());
+  for (int b = 0; b < fields.count(); ++b) {
+    const auto& body = points.bodies[b];
+    colour_[b].assign(cell_count(fields.field(b)), 0.0);
+    spread_to_cells(fields.field(b), points.position, points.volume, body.begin, body.end,
+                    colour_[b]);
+  }
+}
+
+template <int D>
+Vec<D> SharedNodes<D>::outward_normal(const Grid<D>& grid, int body, long node) const {
+  // Eq 28 / 9.11: the colour falls off outward, so the outward normal is −∇χ / |∇χ|.
+  const Vec<D> gradient = cell_gradient_at_node(grid, colour_[body], node);
+  const double length = gradient.norm();
+  return length > 0.0 ? Vec<D>(-gradient / length) : Vec<D>::Zero();
+}
+
+template class SharedNodes<2>;
+template class SharedNodes<3>;
+
+}  // namespace pellicle

@@ -1,0 +1,32 @@
+#include "pellicle/mpm/grid_fields.hpp"
+
+namespace pellicle {
+
+template <int D>
+void GridFields<D>::sum_to_centre_of_mass(bool mass, bool forces) {
+  if (!per_body()) return;
+  const long nodes = centre_of_mass_.node_count();
+#pragma omp parallel for schedule(static)
+  for (long n = 0; n < nodes; ++n) {
+    double m = 0.0;
+    Vec<D> momentum = Vec<D>::Zero(), force = Vec<D>::Zero();
+    for (const auto& g : body_grids_) {
+      if (mass) m += g.mass[n];
+      momentum += g.momentum[n];
+      if (forces) force += g.force[n];
+    }
+    if (mass) centre_of_mass_.mass[n] = m;
+    centre_of_mass_.momentum[n] = momentum;
+    if (forces) centre_of_mass_.force[n] = force;
+  }
+}
+
+template <int D>
+std::size_t GridFields<D>::bytes_per_node() const {
+  return (1 + body_grids_.size()) * (sizeof(double) + 4 * sizeof(Vec<D>));
+}
+
+template class GridFields<2>;
+template class GridFields<3>;
+
+}  // namespace pellicle
