@@ -52,6 +52,28 @@ grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
   { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }
 ls "$work/leave" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
 
+# SIGTERM: the run stops after its step, writes checkpoint.h5 and an "interrupted" summary,
+# exits 143; the checkpoint restarts (with a longer end time) and a changed key is refused.
+"$pellicle" run --quiet --threads 1 --out "$work/term" "$cases/two_disks.toml" \
+  --set solver.end_time=1000 >/dev/null 2>"$work/term.err" &
+run=$!
+for _ in $(seq 100); do [ -f "$work/term/history.csv" ] && break; sleep 0.1; done
+sleep 0.5
+kill -TERM "$run"
+wait "$run"; code=$?
+[ "$code" -eq 143 ] || { echo "FAIL: SIGTERM exit code $code, expected 143"; failures=$((failures + 1)); }
+[ -f "$work/term/checkpoint.h5" ] || { echo "FAIL: no checkpoint after SIGTERM"; failures=$((failures + 1)); }
+grep -q '"status": "interrupted"' "$work/term/summary.json" ||
+  { echo "FAIL: summary.json does not say interrupted"; failures=$((failures + 1)); }
+stopped=$(grep -o '"time": [0-9.e+-]*' "$work/term/summary.json" | awk '{print $2}')
+expect 0 "results" -- "$pellicle" run --quiet --threads 1 --out "$work/resumed" \
+  "$cases/two_disks.toml" --set "solver.end_time=$(awk -v t="$stopped" 'BEGIN{print t + 0.002}')" \
+  --restart "$work/term/checkpoint.h5"
+expect 2 "grid.cell: a restart cannot change this key" -- "$pellicle" run --quiet \
+  --out "$work/refused" "$cases/two_disks.toml" --set grid.cell=0.05 --restart "$work/term/checkpoint.h5"
+expect 2 "not an HDF5 file" -- "$pellicle" run --quiet --out "$work/refused" \
+  "$cases/two_disks.toml" --restart "$work/term/summary.json"
+
 # pellicle normals: a circle with exact normals; errors reported, bad files rejected.
 /usr/bin/env python3 - "$work/circle.csv" <<'PY' 2>/dev/null || awk 'BEGIN{pi=atan2(0,-1); print "x,y,nx,ny"; for(k=0;k<100;k++){a=2*pi*k/100; printf "%.9f,%.9f,%.9f,%.9f\n", 5+2*cos(a), 5+2*sin(a), cos(a), sin(a)}}' > "$work/circle.csv"
 import math, sys

@@ -11,7 +11,9 @@ struct RunOptions {
   std::string out_dir;    //!< empty: the case's output.directory
   std::vector<std::string> overrides;
   bool quiet = false;
-  int threads = 0;  //!< 0: OpenMP default
+  int threads = 0;                  //!< 0: OpenMP default
+  std::string restart;              //!< checkpoint to continue from; empty: start fresh
+  double checkpoint_interval = -1;  //!< > 0 overrides output.checkpoint_interval
 };
 
 int command_run(const RunOptions& options);

@@ -30,6 +30,12 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", run.quiet, "No summary or progress, only errors");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::PositiveNumber);
+  run_cmd->add_option("--restart", run.restart,
+                      "Continue from a checkpoint (the case may change restart-safe keys)");
+  run_cmd
+      ->add_option("--checkpoint-interval", run.checkpoint_interval,
+                   "Simulated time between checkpoints (overrides output.checkpoint_interval)")
+      ->check(CLI::PositiveNumber);
 
   RunOptions check;
   auto* check_cmd =

@@ -2,8 +2,10 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/app/terminal_progress.hpp"
@@ -11,6 +13,7 @@
 #include "pellicle/io/build.hpp"
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/output.hpp"
+#include "pellicle/io/restart.hpp"
 #include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
 
@@ -84,11 +87,32 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
     std::fprintf(out, "warning   CFL number above 1: the run will stop at its first step\n");
 }
 
+//! The signal that asked the run to stop (SIGINT, SIGTERM), or 0.
+volatile std::sig_atomic_t stop_signal = 0;
+extern "C" void request_stop(int signal) {
+  stop_signal = signal;
+}
+
 template <int D>
 int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
+  std::optional<CheckpointHeader> saved;
+  if (!o.restart.empty()) {
+    saved = read_checkpoint_header(o.restart);
+    check_restart(*saved, o.restart, source);
+  }
   Case<D> c = read_case<D>(source);
   if (!o.out_dir.empty()) c.output.directory = o.out_dir;
+  if (o.checkpoint_interval > 0.0) c.output.checkpoint_interval = o.checkpoint_interval;
   auto simulation = build_simulation<D>(c);
+  if (saved) {
+    for (const auto& name : restore_checkpoint<D>(o.restart, *simulation))
+      std::fprintf(stderr, "restart   body '%s' is new: it starts from its case state\n",
+                   name.c_str());
+    if (simulation->finished())
+      throw InputError(SourceLocation{c.file, 0, 0}, "solver.end_time",
+                       "the checkpoint is at t = " + std::to_string(simulation->time()) +
+                           ", not before the end time: raise solver.end_time to continue");
+  }
   std::vector<Probe<D>> probes;
   for (const auto& spec : c.probes) probes.emplace_back(spec, *simulation);
   if (check_only) {
@@ -105,9 +129,24 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   }
   OutputWriter<D>& output = *writer;
   TerminalProgress progress(isatty(STDERR_FILENO));
+  RunControl control;
+  control.header = checkpoint_header_for(source);
+  control.checkpoint_path = c.output.directory + "/checkpoint.h5";
+  control.checkpoint_interval = c.output.checkpoint_interval;
+  control.stop = &stop_signal;
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
   try {
-    const RunStatistics r = run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress,
-                                              hash_text(case_text(source)));
+    const RunStatistics r =
+        run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress, control);
+    if (r.interrupted_by) {
+      std::fprintf(stderr,
+                   "pellicle: interrupted (signal %d) at t=%g, step %ld; continue with "
+                   "--restart %s\n",
+                   r.interrupted_by, simulation->time(), simulation->step_count(),
+                   control.checkpoint_path.c_str());
+      return 128 + r.interrupted_by;
+    }
     if (!o.quiet)
       std::fprintf(stderr, "done      %ld steps in %.2f s, %.3g particle-steps/s\n",
                    simulation->step_count(), r.wall_seconds, r.particle_steps_per_second);
@@ -125,10 +164,18 @@ int run_or_check(const RunOptions& o, bool check_only) {
   if (o.threads > 0) omp_set_num_threads(o.threads);
   try {
     const auto source = load_case_source(o.case_path, o.overrides);
-    if (is_surface_case(*source)) return run_surface_case(*source, o, check_only);
+    if (is_surface_case(*source)) {
+      if (!o.restart.empty() || o.checkpoint_interval > 0.0)
+        throw InputError(SourceLocation{o.case_path, 0, 0}, "--restart",
+                         "checkpoints and restarts are for MPM cases; surface cases run from "
+                         "their start");
+      return run_surface_case(*source, o, check_only);
+    }
     return case_dimension(*source) == 2 ? run_case<2>(*source, o, check_only)
                                         : run_case<3>(*source, o, check_only);
   } catch (const InputError& e) {
+    return report_input_error(e);
+  } catch (const SetupError& e) {
     return report_input_error(e);
   }
 }

@@ -25,6 +25,8 @@ struct OutputSettings {
   double history_interval = 0.0;   //!< simulated time between history rows; 0: every step
   double snapshot_interval = 0.0;  //!< simulated time between snapshots; 0: first and last only
   bool grid_snapshots = false;     //!< also write .vti grid snapshots
+  //! Simulated time between checkpoints (checkpoint.h5); 0: only when interrupted.
+  double checkpoint_interval = 0.0;
 };
 
 template <int D>

@@ -251,6 +251,8 @@ void read_output(TomlParameters& root, Case<D>& c) {
   auto o = root.sub_table("output", false);
   c.output = read_output_settings(*o, c.name, c.settings.end_time);
   c.output.grid_snapshots = o->flag_or("grid_snapshots", false);
+  c.output.checkpoint_interval =
+      o->number_or("checkpoint_interval", 0.0, NumberRange::non_negative());
 }
 
 template <int D>

@@ -1,6 +1,7 @@
 #include "pellicle/io/run.hpp"
 
 #include <chrono>
+#include <limits>
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/progress_observer.hpp"
@@ -9,7 +10,8 @@ namespace pellicle {
 
 template <int D>
 RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
-                             ProgressListener* progress, const std::string& case_hash) {
+                             ProgressListener* progress, const RunControl& control) {
+  const std::string& case_hash = control.header.case_hash;
   const auto start = std::chrono::steady_clock::now();
   ProgressObserver<Simulation<D>, StepObserver<D>> observer(progress, start);
   simulation.add_observer(&output);
@@ -33,8 +35,26 @@ RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
     r.particle_steps_per_second = r.wall_seconds > 0.0 ? point_steps / r.wall_seconds : 0.0;
     return r;
   };
+  double next_checkpoint = control.checkpoint_interval > 0.0
+                               ? simulation.time() + control.checkpoint_interval
+                               : std::numeric_limits<double>::infinity();
+  auto checkpoint = [&] {
+    if (!control.checkpoint_path.empty())
+      write_checkpoint(control.checkpoint_path, simulation, control.header);
+  };
+  int signal = 0;
   try {
-    simulation.run();
+    while (!simulation.finished()) {
+      simulation.step();
+      if (control.stop && *control.stop) {
+        signal = *control.stop;
+        break;
+      }
+      if (simulation.time() + 1e-9 * simulation.last_dt() >= next_checkpoint) {
+        checkpoint();
+        next_checkpoint = simulation.time() + control.checkpoint_interval;
+      }
+    }
   } catch (const NumericalError& e) {
     if (progress) progress->finish(observer.report(simulation));
     output.finish(simulation, std::string("failed: ") + e.what(), case_hash,
@@ -42,14 +62,16 @@ RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
     throw;
   }
   if (progress) progress->finish(observer.report(simulation));
-  const RunStatistics r = statistics();
-  output.finish(simulation, "completed", case_hash, r.wall_seconds);
+  RunStatistics r = statistics();
+  r.interrupted_by = signal;
+  if (signal || control.checkpoint_interval > 0.0) checkpoint();  // the state it ended in
+  output.finish(simulation, signal ? "interrupted" : "completed", case_hash, r.wall_seconds);
   return r;
 }
 
 template RunStatistics run_simulation<2>(Simulation<2>&, OutputWriter<2>&, ProgressListener*,
-                                         const std::string&);
+                                         const RunControl&);
 template RunStatistics run_simulation<3>(Simulation<3>&, OutputWriter<3>&, ProgressListener*,
-                                         const std::string&);
+                                         const RunControl&);
 
 }  // namespace pellicle

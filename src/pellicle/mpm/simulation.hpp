@@ -74,6 +74,7 @@ class Simulation final : private Stages {
   //! Add a hook (boundary condition, contact, …) acting at the step's named points.
   void add_hook(std::unique_ptr<StepHook<D>> hook);
   const std::vector<std::unique_ptr<StepHook<D>>>& hooks() const { return hooks_; }
+  std::vector<std::unique_ptr<StepHook<D>>>& hooks() { return hooks_; }
 
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
   void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
@@ -81,6 +82,8 @@ class Simulation final : private Stages {
   double time() const { return time_; }
   long step_count() const { return step_; }
   double last_dt() const { return last_dt_; }
+  //! Largest point speed after the last step (part of the next step's CFL signal speed).
+  double max_point_speed() const { return max_speed_; }
   //! Courant number Δt max(c + |v|)/h of the last step.
   double cfl_number() const { return cfl_number_; }
   //! The time step the next call of step() would take.

@@ -4,13 +4,16 @@
 //! exchange. A new one is a class here plus its registration; step() does not change.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace pellicle {
 
 template <int D>
 class Simulation;
-class CheckpointReader;
-class CheckpointWriter;
+
+//! Named arrays a hook carries from one step to the next (written to checkpoints).
+using HookState = std::vector<std::pair<std::string, std::vector<double>>>;
 
 //! Which grid velocities a hook sees after a grid update: the Lagrangian ones after the
 //! momentum solve (they move the points), or the convected ones of the MUSL remap (they give
@@ -29,9 +32,11 @@ class StepHook {
   virtual void after_to_points(Simulation<D>&) {}
   //! The hook needs each body in its own grid field (contact models).
   virtual bool needs_body_fields() const { return false; }
-  //! State the hook carries from step to step, for checkpoints (under `group`).
-  virtual void save_state(CheckpointWriter&, const std::string& /*group*/) const {}
-  virtual void load_state(const CheckpointReader&, const std::string& /*group*/) {}
+  //! Hooks that carry state from step to step name it (a checkpoint group); empty: none.
+  virtual std::string state_name() const { return {}; }
+  virtual HookState save_state() const { return {}; }
+  //! Continue from a saved state; arrays the hook does not know are an error it throws.
+  virtual void load_state(const HookState&) {}
 };
 
 }  // namespace pellicle

@@ -54,6 +54,16 @@ class Release final : public ContactModel<D> {
     });
   }
 
+  //! Criterion 9.9 keeps each node's last state: a restart needs it to continue the same way.
+  std::string state_name() const override { return "contact-release"; }
+  HookState save_state() const override {
+    return {{"node_state", std::vector<double>(released_.begin(), released_.end())}};
+  }
+  void load_state(const HookState& state) override {
+    for (const auto& [name, values] : state)
+      if (name == "node_state") released_.assign(values.begin(), values.end());
+  }
+
  private:
   static constexpr char kNotShared = 0, kContact = 1, kReleased = 2;
 

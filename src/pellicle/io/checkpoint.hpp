@@ -1,0 +1,50 @@
+#pragma once
+//! Checkpoints: the whole state of an MPM run in one HDF5 file, written atomically (a
+//! temporary name, then rename), readable with h5py or h5dump. Layout:
+//!   /                 attributes format, version, dimension, case_file, case_hash,
+//!                     case_text (as given), case_toml (with --set applied), time, step,
+//!                     last_dt, max_speed, rng
+//!   /bodies/body_N    attributes name, material; datasets position, velocity, mass,
+//!                     volume, density, stress, and columns/<name> for every declared
+//!                     column marked for checkpoints (one row per point)
+//!   /hooks/<name>     the arrays of hooks that carry state (contact-release's node states)
+//! The frame estimators draw their random points from a generator seeded per cell, so the
+//! run has no random state beyond the seed recorded in `rng`.
+
+#include <string>
+#include <vector>
+
+#include "pellicle/mpm/simulation.hpp"
+
+namespace pellicle {
+
+//! What identifies a checkpoint and the run it belongs to.
+struct CheckpointHeader {
+  std::string version;  //!< Pellicle version that wrote it
+  int dimension = 0;
+  std::string case_file;  //!< the case file's name as given
+  std::string case_hash;  //!< hash of the case text with its --set overrides
+  std::string case_text;  //!< the case as given, overrides appended as comments
+  std::string case_toml;  //!< the case as run (overrides applied), TOML
+  double time = 0.0;
+  long step = 0;
+};
+
+//! Write the state of `simulation` to `path` (atomically). Throws std::runtime_error naming
+//! the path when it cannot be written.
+template <int D>
+void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
+                      const CheckpointHeader& header);
+
+//! Read the header. Throws InputError naming the file when it is not a Pellicle checkpoint.
+CheckpointHeader read_checkpoint_header(const std::string& path);
+
+//! Continue `simulation` (built from the case, possibly changed) from the checkpoint: every
+//! body found in it by name takes its saved points (the point count must match), the clock
+//! and the hooks' state are restored. Returns the names of bodies the checkpoint does not
+//! hold (added by the changed case; they start from their case state). Throws InputError
+//! for a body whose point count changed or a declared column the checkpoint lacks.
+template <int D>
+std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& simulation);
+
+}  // namespace pellicle

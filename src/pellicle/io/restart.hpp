@@ -1,0 +1,30 @@
+#pragma once
+//! Starting a run from another run's checkpoint (`pellicle run CASE --restart FILE`). The
+//! case may differ from the saved one only where a restart can honour it:
+//!   solver.dt, solver.cfl, solver.cfl_limit, solver.end_time   the time stepping
+//!   [output], [case], [[probe]], [contact], grid.boundary      what is written, the contact
+//!                                                              rule, the grid's faces
+//!   [[body]] tables added or removed                           new bodies start from their
+//!                                                              case state; removed ones go
+//!   [[material]] tables added or removed                       (those no kept body uses)
+//! A body kept by name must be unchanged, as must the materials it uses and every other key;
+//! anything else is refused with the key and its place in the new case.
+
+#include <memory>
+#include <string>
+
+#include "pellicle/io/case.hpp"
+#include "pellicle/io/checkpoint.hpp"
+
+namespace pellicle {
+
+//! The checkpoint header for a run of `source` (case text, TOML as run, hash).
+CheckpointHeader checkpoint_header_for(const CaseSource& source);
+
+//! Refuse (InputError, every problem listed) a restart of `now` from a checkpoint written
+//! by another Pellicle version, in another dimension, or whose case differs from `now` in a
+//! key a restart cannot change.
+void check_restart(const CheckpointHeader& saved, const std::string& checkpoint_path,
+                   const CaseSource& now);
+
+}  // namespace pellicle
