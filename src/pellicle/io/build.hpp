@@ -1,6 +1,6 @@
 #pragma once
-//! Turn a checked case into a ready-to-run Simulation: fill the bodies with points, give them
-//! mass, velocity and initial stress, and choose the kernel's transfers.
+//! Turn a checked case into a ready-to-run Simulation through the engine's builder
+//! (mpm/builder.hpp), reporting what the builder refuses at the case's locations.
 
 #include <memory>
 
@@ -9,12 +9,9 @@
 
 namespace pellicle {
 
-//! Consumes the case's materials. Throws InputError when a body holds no point.
+//! Consumes the case's materials, bodies and contact model. Throws InputError (a body that holds
+//! no point, a point index a body does not have, …) with the body's table location.
 template <int D>
 std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c);
-
-//! Volume a point stands for: its sub-cell (per unit depth in 2D; × 2πr in axisymmetry).
-template <int D>
-double point_volume(double cell, int points_per_cell, Kinematics kinematics, const Vec<D>& x);
 
 }  // namespace pellicle

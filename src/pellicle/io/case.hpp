@@ -12,6 +12,7 @@
 #include "pellicle/geometry/membrane_geometry.hpp"
 #include "pellicle/geometry/region.hpp"
 #include "pellicle/io/probes.hpp"
+#include "pellicle/mpm/builder.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/simulation.hpp"
@@ -29,32 +30,10 @@ struct OutputSettings {
   double checkpoint_interval = 0.0;
 };
 
+//! A body as the case describes it: the builder's set-up and where its table is.
 template <int D>
-struct BodySpec {
-  std::string name;
-  int material = 0;
-  int points_per_cell = 2;  //!< per direction
-  Vec<D> velocity = Vec<D>::Zero();
-  //! Initial velocity field v = velocity + ω × (x − c) + G (x − c); 2D uses ω's z only.
-  Vec3 angular_velocity = Vec3::Zero();
-  Mat<D> velocity_gradient = Mat<D>::Zero();
-  std::optional<Vec<D>> center;            //!< c; default: the body's centre of mass
-  Vec<D> external_force = Vec<D>::Zero();  //!< total, spread over the body by mass
-  std::optional<Sym<D>> initial_stress, initial_strain;
-  //! Points (first, last; indices within the body) that take the initial stress or strain;
-  //! default all (the slack of IJNME §3.2 is strain on points 4–9 of a string only).
-  std::pair<long, long> initial_points{0, -1};
-  RegionPtr<D> region;  //!< solids: the region the points fill
-  //! Membranes: the sampled curve or surface, its thickness and frame estimator.
-  std::optional<MembraneGeometry<D>> membrane;
-  double thickness = 0.0;
-  std::string frames = "connectivity";
-  NormalOrientation orientation = NormalOrientation::propagate;
-  std::vector<std::pair<long, double>> point_masses;      //!< (index in body, mass) overrides
-  std::vector<std::pair<long, Vec<D>>> point_velocities;  //!< (index in body, velocity) overrides
-  std::optional<double> density;  //!< overrides the material's reference density
-  double internal_energy = 0.0;   //!< fluids: initial specific internal energy e
-  SourceLocation where;           //!< the body's table, for problems found when filling it
+struct BodySpec : BodySetup<D> {
+  SourceLocation where;  //!< the body's table, for problems found when filling it
 };
 
 template <int D>

@@ -232,7 +232,10 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   std::vector<std::string> kernels;
   for (const auto& k : kernel_choices<D>()) kernels.push_back(k.name);
   c.kernel = s->choice("kernel", kernels, "linear");
-  if (c.transfer.update == VelocityUpdate::apic && c.kernel == "linear")
+  const auto& kernel = kernel_choices<D>();
+  const auto chosen =
+      std::find_if(kernel.begin(), kernel.end(), [&](const auto& k) { return k.name == c.kernel; });
+  if (c.transfer.update == VelocityUpdate::apic && chosen != kernel.end() && !chosen->offers_apic)
     s->fail("velocity_update",
             "APIC is not offered with the linear kernel: it goes unstable at free surfaces (the "
             "two-disk test); use kernel = \"quadratic-bspline\", \"cubic-bspline\" or \"ugimp\"");

@@ -9,8 +9,9 @@ namespace pellicle {
 template <int D>
 const std::vector<KernelChoice<D>>& kernel_choices() {
   static const std::vector<KernelChoice<D>> kernels = {
-      {"linear", "linear tent (bi/trilinear), the seeds' kernel", &make_linear_transfer<D>},
-      {"ugimp", "uniform GIMP, particle size from points per cell", &make_ugimp_transfer<D>},
+      {"linear", "linear tent (bi/trilinear), the seeds' kernel", &make_linear_transfer<D>, false},
+      {"ugimp", "uniform GIMP, particle size from points per cell", &make_ugimp_transfer<D>, true,
+       true},
       {"quadratic-bspline", "quadratic B-spline", &make_quadratic_transfer<D>},
       {"cubic-bspline", "cubic B-spline", &make_cubic_transfer<D>},
   };

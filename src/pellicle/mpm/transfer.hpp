@@ -100,6 +100,11 @@ struct KernelChoice {
   std::string name;
   std::string summary;
   std::unique_ptr<Transfer<D>> (*make)(const TransferOptions& options, double points_per_cell);
+  //! APIC works with it (the linear kernel's affine field jumps as points cross cells and
+  //! goes unstable at free surfaces: the two-disk test).
+  bool offers_apic = true;
+  //! Its particle size is h / points_per_cell: every body must use the same points per cell.
+  bool one_particle_size = false;
 };
 
 //! Registered kernels (transfer.cpp: one line per kernel).

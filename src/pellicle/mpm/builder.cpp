@@ -1,0 +1,221 @@
+#include "pellicle/mpm/builder.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+#include "pellicle/geometry/fill.hpp"
+
+namespace pellicle {
+
+namespace {
+std::string describe(const std::vector<SetupProblem>& problems) {
+  std::string all;
+  for (const auto& p : problems) all += (all.empty() ? "" : "\n") + p.key + ": " + p.message;
+  return all;
+}
+}  // namespace
+
+BuildError::BuildError(std::vector<SetupProblem> problems)
+    : SetupError(describe(problems)), problems_(std::move(problems)) {}
+
+template <int D>
+double point_volume(double cell, int points_per_cell, Kinematics kinematics, const Vec<D>& x) {
+  const double v = std::pow(cell / points_per_cell, D);
+  return kinematics == Kinematics::axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v;
+}
+
+template <int D>
+SimulationBuilder<D>::SimulationBuilder(const Vec<D>& lower, const Vec<D>& upper, double cell,
+                                        const FaceConditions<D>& faces)
+    : lower_(lower), upper_(upper), cell_(cell), faces_(faces) {}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::settings(const SimulationSettings& settings) {
+  settings_ = settings;
+  return *this;
+}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::kernel(const std::string& name,
+                                                   const TransferOptions& options) {
+  kernel_ = name;
+  transfer_ = options;
+  return *this;
+}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::gravity(const Vec<D>& g) {
+  gravity_ = g;
+  return *this;
+}
+
+template <int D>
+int SimulationBuilder<D>::material(std::unique_ptr<Material<D>> model) {
+  materials_.push_back(std::move(model));
+  return static_cast<int>(materials_.size()) - 1;
+}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::body(BodySetup<D> body) {
+  bodies_.push_back(std::move(body));
+  return *this;
+}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::contact(std::unique_ptr<ContactModel<D>> model) {
+  contact_ = std::move(model);
+  return *this;
+}
+
+namespace {
+
+//! Where a body's points are and what each stands for: filled sub-cells of a region, or the
+//! samples of a membrane (volume = length or area × thickness, IJNME §3: m = ρ Δs t).
+template <int D>
+std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const Vec<D>& lower,
+                                                   const Vec<D>& upper, double cell,
+                                                   Kinematics kinematics) {
+  std::vector<std::pair<Vec<D>, double>> out;
+  const bool axisymmetric = kinematics == Kinematics::axisymmetric;
+  if (b.membrane) {
+    for (std::size_t i = 0; i < b.membrane->points.size(); ++i) {
+      const Vec<D>& x = b.membrane->points[i];
+      const double v = b.membrane->measure[i] * b.thickness;
+      out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
+    }
+  } else if (b.region) {
+    for (const auto& x : fill_region<D>(*b.region, lower, upper, cell, b.points_per_cell))
+      out.emplace_back(x, point_volume<D>(cell, b.points_per_cell, kinematics, x));
+  }
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
+  std::vector<SetupProblem> problems;
+  const KernelChoice<D>* kernel = nullptr;
+  for (const auto& k : kernel_choices<D>())
+    if (k.name == kernel_) kernel = &k;
+  if (!kernel) problems.push_back({-1, "kernel", "no kernel named \"" + kernel_ + "\""});
+  if (kernel && transfer_.update == VelocityUpdate::apic && !kernel->offers_apic)
+    problems.push_back({-1, "velocity_update", "APIC is not offered with kernel " + kernel_});
+  if (bodies_.empty()) problems.push_back({-1, "body", "no body"});
+
+  Grid<D> grid(lower_, upper_, cell_, faces_);
+  Particles<D> points;
+  for (auto& material : materials_) material->declare_columns(points);
+  for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    const BodySetup<D>& b = bodies_[index];
+    const int i = static_cast<int>(index);
+    if (b.material < 0 || b.material >= static_cast<int>(materials_.size())) {
+      problems.push_back({i, "material", "body '" + b.name + "': no such material"});
+      continue;
+    }
+    const Material<D>& material = *materials_[b.material];
+    if (material.is_membrane() != b.membrane.has_value()) {
+      problems.push_back({i, "material",
+                          "body '" + b.name + "': " +
+                              (b.membrane ? "a membrane body needs a membrane material"
+                                          : "a membrane material needs a membrane body")});
+      continue;
+    }
+    if (kernel && kernel->one_particle_size && b.points_per_cell != bodies_.front().points_per_cell)
+      problems.push_back({i, "points_per_cell",
+                          "kernel " + kernel_ +
+                              " has one particle size (h / points_per_cell): "
+                              "every body must use the same points_per_cell"});
+    const auto positions = body_points(b, lower_, upper_, cell_, settings_.kinematics);
+    if (positions.empty()) {
+      problems.push_back(
+          {i, "region", "body '" + b.name + "': the region holds no point inside the grid"});
+      continue;
+    }
+    bool outside = false;
+    for (const auto& [x, v] : positions) outside = outside || !grid.contains(x);
+    if (outside) {
+      problems.push_back(
+          {i, "membrane", "body '" + b.name + "': membrane points lie outside the grid"});
+      continue;
+    }
+    const long count = static_cast<long>(positions.size());
+    auto check_index = [&](long point, const char* key) {
+      if (point >= count)
+        problems.push_back({i, key,
+                            "body '" + b.name + "': no point " + std::to_string(point) +
+                                " (it has " + std::to_string(count) + ")"});
+    };
+    for (const auto& entry : b.point_masses) check_index(entry.first, "point_masses");
+    for (const auto& entry : b.point_velocities) check_index(entry.first, "point_velocities");
+    const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
+    check_index(last, "initial_strain.points");
+
+    std::shared_ptr<FrameEstimator<D>> frames;
+    if (b.membrane) {
+      FrameSetup<D> setup;
+      setup.connectivity = b.membrane->connectivity;
+      setup.grid_origin = lower_;
+      setup.cell = cell_;
+      setup.orientation = b.orientation;
+      for (const auto& e : frame_estimators<D>())
+        if (e.name == b.frames) frames = e.make(setup);
+      if (!frames)
+        problems.push_back({i, "frames", "no frame estimator named \"" + b.frames + "\""});
+    }
+    points.bodies.push_back(
+        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frames});
+    const double density = b.density.value_or(material.density());
+    for (const auto& [x, volume] : positions) points.add(x, b.velocity, density * volume, density);
+    auto& body = points.bodies.back();
+    InitialState<D> state;
+    state.internal_energy = b.internal_energy;
+    material.initialise(points, body.begin, body.end, state);
+    state.strain = b.initial_strain.value_or(Sym<D>::Zero());
+    state.stress = b.initial_stress;
+    if (last < count)
+      material.initialise(points, body.begin + b.initial_points.first, body.begin + last + 1,
+                          state);
+    // Point masses given explicitly (an end mass on a string) keep their point's volume.
+    for (const auto& [point, mass] : b.point_masses) {
+      if (point >= count) continue;
+      const long p = body.begin + point;
+      points.mass[p] = mass;
+      points.density[p] = mass / points.volume[p];
+    }
+    double body_mass = 0.0;
+    Vec<D> first_moment = Vec<D>::Zero();
+    for (long p = body.begin; p < body.end; ++p) {
+      body_mass += points.mass[p];
+      first_moment += points.mass[p] * points.position[p];
+    }
+    body.applied_acceleration = b.external_force / body_mass;
+    const Vec<D> center = b.center.value_or(first_moment / body_mass);
+    for (long p = body.begin; p < body.end; ++p) {
+      Vec3 r = Vec3::Zero();
+      r.template head<D>() = points.position[p] - center;
+      points.velocity[p] += b.angular_velocity.cross(r).template head<D>() +
+                            b.velocity_gradient * r.template head<D>();
+    }
+    for (const auto& [point, velocity] : b.point_velocities)
+      if (point < count) points.velocity[body.begin + point] = velocity;
+  }
+  if (!problems.empty()) throw BuildError(problems);
+
+  TransferOptions options = transfer_;
+  options.kinematics = settings_.kinematics;
+  auto simulation = std::make_unique<Simulation<D>>(
+      settings_, std::move(grid), std::move(points), std::move(materials_),
+      kernel->make(options, bodies_.front().points_per_cell), gravity_);
+  simulation->set_contact(std::move(contact_));
+  return simulation;
+}
+
+template class SimulationBuilder<2>;
+template class SimulationBuilder<3>;
+template double point_volume<2>(double, int, Kinematics, const Vec<2>&);
+template double point_volume<3>(double, int, Kinematics, const Vec<3>&);
+
+}  // namespace pellicle
