@@ -1,5 +1,6 @@
 //! The material registry: adding a model is one new file and one line here.
 #include "pellicle/mpm/materials/fluid.hpp"
+#include "pellicle/mpm/materials/j2_plasticity.hpp"
 #include "pellicle/mpm/materials/linear_elastic.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 #include "pellicle/mpm/materials/membrane.hpp"
@@ -12,6 +13,8 @@ const std::vector<MaterialModel<D>>& material_models() {
   static const std::vector<MaterialModel<D>> models = {
       {"linear-elastic", "isotropic linear elasticity, Jaumann stress rate (IJNME eqs 2, 14)",
        &make_linear_elastic<D>},
+      {"j2-plasticity", "von Mises plasticity, linear hardening, radial return (plasticity.md)",
+       &make_j2_plasticity<D>},
       {"membrane", "strings and membranes in their local frame (thesis ch. 5, IJNME §3)",
        &make_membrane<D>},
       {"rigid", "rigid body with a prescribed constant velocity; imposes it on its nodes",

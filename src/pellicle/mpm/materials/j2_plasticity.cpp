@@ -1,0 +1,103 @@
+#include "pellicle/mpm/materials/j2_plasticity.hpp"
+
+#include <cmath>
+
+#include "pellicle/mpm/materials/kinematics.hpp"
+
+namespace pellicle {
+
+template <int D>
+J2Plasticity<D>::J2Plasticity(Kinematics kinematics, double density, const J2Constants& constants)
+    : Material<D>(kinematics), density_(density), constants_(constants) {}
+
+template <int D>
+void J2Plasticity<D>::declare_columns(Particles<D>& points) {
+  Material<D>::declare_columns(points);  // strain
+  plastic_strain_ = points.template declare<double>({plastic_strain_column, "1", true, true});
+}
+
+template <int D>
+double J2Plasticity<D>::wave_modulus() const {
+  const double E = constants_.young, nu = constants_.poisson;
+  if (this->kinematics() == Kinematics::plane_stress) return E / (1.0 - nu * nu);
+  return constants_.lambda() + 2.0 * constants_.shear();
+}
+
+template <int D>
+void J2Plasticity<D>::update(const MaterialStep<D>& step) const {
+  auto& pts = step.points;
+  auto& strain = pts[this->strain_];
+  auto& plastic_strain = pts[plastic_strain_];
+  const Kinematics kinematics = this->kinematics();
+  const bool axisymmetric = kinematics == Kinematics::axisymmetric;
+#pragma omp parallel for schedule(static)
+  for (long p = step.begin; p < step.end; ++p) {
+    const Mat<D>& L = step.velocity_gradient[p];
+    // Δε = Δt sym(L), hoop increment in axisymmetry (P3); the plane-stress return sets Δε_zz.
+    Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
+    // Rotate first (P2): ε̄p is a scalar and is not rotated.
+    const J2State<D> rotated{jaumann_rotate<D>(pts.stress[p], L, step.dt), plastic_strain[p]};
+    // Elastic predictor and return mapping (P3)–(P15).
+    const J2State<D> next = j2_update<D>(rotated, de, constants_, kinematics);
+    pts.stress[p] = next.stress;
+    plastic_strain[p] = next.plastic_strain;
+    strain[p] += de;
+  }
+}
+
+template <int D>
+double J2Plasticity<D>::max_signal_speed(const Particles<D>& points, long begin, long end,
+                                         double /*cell*/) const {
+  return std::sqrt(wave_modulus() / smallest_density(points, begin, end, density_));
+}
+
+template <int D>
+double J2Plasticity<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
+  // (P16): from the stress alone, σ_zz included, so valid for every kinematics and after
+  // yield (the elastic strain is not the total strain then).
+  double energy = 0.0;
+#pragma omp parallel for reduction(+ : energy) schedule(static)
+  for (long p = begin; p < end; ++p)
+    energy += points.volume[p] * j2_elastic_energy_density<D>(points.stress[p], constants_);
+  return energy;
+}
+
+template <int D>
+Sym<D> J2Plasticity<D>::stress_from_strain(const Sym<D>& strain) const {
+  const double E = constants_.young, nu = constants_.poisson, G = constants_.shear();
+  Sym<D> s;
+  if constexpr (D == 2) {
+    if (this->kinematics() == Kinematics::plane_stress) {
+      // In-plane plane-stress law, as the elastic predictor (P11).
+      const double c = E / (1.0 - nu * nu);
+      s << c * (strain[0] + nu * strain[1]), c * (nu * strain[0] + strain[1]), 0.0,
+          2.0 * G * strain[3];
+      return s;
+    }
+  }
+  s = 2.0 * G * strain;  // (P1)
+  s.template head<3>().array() += constants_.lambda() * trace<D>(strain);
+  return s;
+}
+
+template <int D>
+std::unique_ptr<Material<D>> make_j2_plasticity(ParameterReader& in, Kinematics kinematics) {
+  if (!j2_supports<D>(kinematics))
+    in.fail("model",
+            "j2-plasticity needs grid.kinematics = \"plane-strain\", \"plane-stress\" or "
+            "\"axisymmetric\" in 2D, \"solid\" in 3D");
+  J2Constants c{};
+  const double rho = in.number("density", NumberRange::positive());
+  c.young = in.number("youngs_modulus", NumberRange::positive());
+  c.poisson = in.number_or("poisson_ratio", 0.0, {-1.0, 0.5, true, true});
+  c.yield_stress = in.number("yield_stress", NumberRange::positive());
+  c.hardening = in.number_or("hardening_modulus", 0.0, NumberRange::non_negative());
+  return std::make_unique<J2Plasticity<D>>(kinematics, rho, c);
+}
+
+template class J2Plasticity<2>;
+template class J2Plasticity<3>;
+template std::unique_ptr<Material<2>> make_j2_plasticity<2>(ParameterReader&, Kinematics);
+template std::unique_ptr<Material<3>> make_j2_plasticity<3>(ParameterReader&, Kinematics);
+
+}  // namespace pellicle
