@@ -11,6 +11,7 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   for (auto& material : c.materials) builder.material(std::move(material));
   for (auto& body : c.bodies) builder.body(std::move(static_cast<BodySetup<D>&>(body)));
   builder.contact(std::move(c.contact));
+  for (auto& boundary : c.boundaries) builder.hook(std::move(boundary));
   try {
     return builder.build();
   } catch (const BuildError& e) {  // the same problems, at the tables they come from

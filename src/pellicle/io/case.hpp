@@ -50,7 +50,8 @@ struct Case {
   std::vector<std::string> material_names;
   std::vector<std::unique_ptr<Material<D>>> materials;
   std::vector<BodySpec<D>> bodies;
-  std::unique_ptr<ContactModel<D>> contact;  //!< null: the single centre-of-mass field
+  std::unique_ptr<ContactModel<D>> contact;              //!< null: the single centre-of-mass field
+  std::vector<std::unique_ptr<StepHook<D>>> boundaries;  //!< [[boundary]] conditions
   std::vector<ProbeSpec<D>> probes;
 };
 

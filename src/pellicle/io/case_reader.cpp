@@ -9,6 +9,7 @@
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/case_source.hpp"
 #include "pellicle/io/toml_parameters.hpp"
+#include "pellicle/mpm/boundary/boundary_condition.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
 
 namespace pellicle {
@@ -439,6 +440,24 @@ void read_contact(TomlParameters& root, Case<D>& c) {
     t->fail("model", "contact models work with solver.scheme = \"musl\" or \"usl\", not \"usf\"");
 }
 
+//! [[boundary]]: boundary conditions by registered name (mpm/boundary/registry.cpp).
+template <int D>
+void read_boundaries(TomlParameters& root, Case<D>& c) {
+  if (!root.has("boundary")) return;
+  std::vector<std::string> models;
+  for (const auto& m : boundary_models<D>()) models.push_back(m.name);
+  for (auto& t : root.sub_tables("boundary")) {
+    const std::string model = t->choice("model", models);
+    bool made = false;
+    for (const auto& m : boundary_models<D>())
+      if (m.name == model) {
+        c.boundaries.push_back(m.make(*t));
+        made = true;
+      }
+    if (!made) t->ignore_rest();
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -461,6 +480,7 @@ Case<D> read_case(const CaseSource& source) {
     read_materials(root, c);
     read_bodies(root, c);
     read_contact(root, c);
+    read_boundaries(root, c);
     read_probes(root, c);
   }  // unknown keys are reported as the readers go out of scope
   problems.throw_if_any();

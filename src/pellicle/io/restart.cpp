@@ -22,7 +22,7 @@ bool same(const toml::node* a, const toml::node* b) {
 
 //! Top-level tables and keys a restart may change freely.
 bool restart_safe(const std::string& table, const std::string& key) {
-  static const std::set<std::string> whole{"output", "case", "probe", "contact"};
+  static const std::set<std::string> whole{"output", "case", "probe", "contact", "boundary"};
   if (whole.count(table)) return true;
   if (table == "solver")
     return key == "dt" || key == "cfl" || key == "cfl_limit" || key == "end_time";
@@ -59,7 +59,7 @@ class Comparison {
       if (same(a, b)) continue;
       refuse(b, now, name + "." + key,
              "a restart cannot change this key (only solver.dt, cfl, cfl_limit, end_time, "
-             "[output], [contact], grid.boundary and added or removed bodies)");
+             "[output], [contact], [[boundary]], grid.boundary and added or removed bodies)");
     }
   }
 

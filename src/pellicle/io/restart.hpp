@@ -2,8 +2,8 @@
 //! Starting a run from another run's checkpoint (`pellicle run CASE --restart FILE`). The
 //! case may differ from the saved one only where a restart can honour it:
 //!   solver.dt, solver.cfl, solver.cfl_limit, solver.end_time   the time stepping
-//!   [output], [case], [[probe]], [contact], grid.boundary      what is written, the contact
-//!                                                              rule, the grid's faces
+//!   [output], [case], [[probe]], [contact], [[boundary]],      what is written, the contact
+//!   grid.boundary                                              rule, boundary conditions
 //!   [[body]] tables added or removed                           new bodies start from their
 //!                                                              case state; removed ones go
 //!   [[material]] tables added or removed                       (those no kept body uses)

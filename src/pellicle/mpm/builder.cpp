@@ -69,6 +69,12 @@ SimulationBuilder<D>& SimulationBuilder<D>::contact(std::unique_ptr<ContactModel
   return *this;
 }
 
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::hook(std::unique_ptr<StepHook<D>> hook) {
+  hooks_.push_back(std::move(hook));
+  return *this;
+}
+
 namespace {
 
 //! Where a body's points are and what each stands for: filled sub-cells of a region, or the
@@ -210,6 +216,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       settings_, std::move(grid), std::move(points), std::move(materials_),
       kernel->make(options, bodies_.front().points_per_cell), gravity_);
   simulation->set_contact(std::move(contact_));
+  for (auto& hook : hooks_) simulation->add_hook(std::move(hook));
   return simulation;
 }
 

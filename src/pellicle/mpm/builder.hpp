@@ -83,6 +83,8 @@ class SimulationBuilder {
   int material(std::unique_ptr<Material<D>> model);
   SimulationBuilder& body(BodySetup<D> body);
   SimulationBuilder& contact(std::unique_ptr<ContactModel<D>> model);
+  //! A boundary condition or other hook (mpm/boundary/), applied in the order added.
+  SimulationBuilder& hook(std::unique_ptr<StepHook<D>> hook);
 
   //! Fill the bodies with points and assemble the simulation (the builder is spent). Throws
   //! BuildError listing every problem (a region without points inside the grid, a membrane
@@ -101,6 +103,7 @@ class SimulationBuilder {
   std::vector<std::unique_ptr<Material<D>>> materials_;
   std::vector<BodySetup<D>> bodies_;
   std::unique_ptr<ContactModel<D>> contact_;
+  std::vector<std::unique_ptr<StepHook<D>>> hooks_;
 };
 
 //! Volume a point stands for: its sub-cell (per unit depth in 2D; × 2πr in axisymmetry).

@@ -80,9 +80,13 @@ class Grid {
   //! Set ghost-node values beyond constrained faces from their images: v_ghost = R v_image.
   void mirror(std::vector<Vec<D>>& field) const;
 
-  //! Nodes that take a prescribed velocity (touched by rigid bodies), set every step before
-  //! the grid solve and applied by integrate() and velocities_from_momentum().
-  void prescribe(std::vector<std::pair<long, Vec<D>>> nodes) { prescribed_ = std::move(nodes); }
+  //! Nodes that take a prescribed velocity (rigid bodies, boundary conditions), added every
+  //! step after `to_grid` clears them, and applied by integrate() and
+  //! velocities_from_momentum(). A node prescribed twice takes the later velocity.
+  void prescribe(const std::vector<std::pair<long, Vec<D>>>& nodes) {
+    prescribed_.insert(prescribed_.end(), nodes.begin(), nodes.end());
+  }
+  void clear_prescribed() { prescribed_.clear(); }
 
   //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
   void constrain(std::vector<Vec<D>>& field) const {

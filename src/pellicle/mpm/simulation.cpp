@@ -129,6 +129,7 @@ void Simulation<D>::stencils() {
 
 template <int D>
 void Simulation<D>::to_grid(bool forces) {
+  fields_.for_each_grid([](Grid<D>& g) { g.clear_prescribed(); });  // hooks set them anew
   for (int k = 0; k < fields_.count(); ++k)
     transfer_->to_grid(points_, gravity_, fields_.field(k), forces, fields_.points(k));
   fields_.sum_to_centre_of_mass(true, forces);

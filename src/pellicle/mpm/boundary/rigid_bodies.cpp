@@ -17,7 +17,7 @@ void RigidBodies<D>::after_to_grid(Simulation<D>& simulation) {
     for (long n : nodes_) all.emplace_back(n, velocity_[r]);
     if (fields.per_body()) fields.field(bodies_[r]).prescribe({all.begin() + first, all.end()});
   }
-  fields.centre_of_mass().prescribe(std::move(all));
+  fields.centre_of_mass().prescribe(all);
 }
 
 template <int D>
