@@ -83,8 +83,11 @@ class Grid {
   //! Nodes that take a prescribed velocity (rigid bodies, boundary conditions), added every
   //! step after `to_grid` clears them, and applied by integrate() and
   //! velocities_from_momentum(). A node prescribed twice takes the later velocity.
+  void prescribe(const std::pair<long, Vec<D>>* first, const std::pair<long, Vec<D>>* last) {
+    prescribed_.insert(prescribed_.end(), first, last);
+  }
   void prescribe(const std::vector<std::pair<long, Vec<D>>>& nodes) {
-    prescribed_.insert(prescribed_.end(), nodes.begin(), nodes.end());
+    prescribe(nodes.data(), nodes.data() + nodes.size());
   }
   void clear_prescribed() { prescribed_.clear(); }
 

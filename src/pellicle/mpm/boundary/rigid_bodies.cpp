@@ -8,14 +8,16 @@ template <int D>
 void RigidBodies<D>::after_to_grid(Simulation<D>& simulation) {
   auto& fields = simulation.fields();
   const auto& points = simulation.points();
-  std::vector<std::pair<long, Vec<D>>> all;
+  auto& all = prescribed_;
+  all.clear();
   for (std::size_t r = 0; r < bodies_.size(); ++r) {
     const auto& body = points.bodies[bodies_[r]];
     nodes_.clear();
     simulation.transfer().touched_nodes(fields.centre_of_mass(), body.begin, body.end, nodes_);
     const std::size_t first = all.size();
     for (long n : nodes_) all.emplace_back(n, velocity_[r]);
-    if (fields.per_body()) fields.field(bodies_[r]).prescribe({all.begin() + first, all.end()});
+    if (fields.per_body())
+      fields.field(bodies_[r]).prescribe(all.data() + first, all.data() + all.size());
   }
   fields.centre_of_mass().prescribe(all);
 }

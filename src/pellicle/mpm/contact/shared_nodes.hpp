@@ -79,6 +79,10 @@ class SharedNodes {
 
   std::vector<std::vector<double>> colour_;  //!< per body, on cell centres
   std::vector<Vec<D>> contact_force_;
+  // Work storage, sized once for the run's bodies and threads (no allocation per step).
+  std::vector<Grid<D>*> grids_;
+  std::vector<SharedNode<D>> nodes_;               //!< one per thread
+  std::vector<std::vector<Vec<D>>> thread_force_;  //!< one per thread
 };
 
 template <int D>
@@ -90,8 +94,14 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
   if (lagrangian) colour_functions(fields, points);
   const Grid<D>& centre_of_mass = fields.centre_of_mass();
   const int bodies = fields.count();
-  std::vector<Grid<D>*> grids(bodies);
-  for (int b = 0; b < bodies; ++b) grids[b] = &fields.field(b);
+  grids_.resize(bodies);
+  for (int b = 0; b < bodies; ++b) grids_[b] = &fields.field(b);
+  const auto& grids = grids_;
+  const int threads = omp_get_max_threads();
+  if (static_cast<int>(nodes_.size()) != threads || nodes_.front().body.size() != grids.size()) {
+    nodes_.assign(threads, SharedNode<D>(bodies));
+    thread_force_.assign(threads, std::vector<Vec<D>>(bodies));
+  }
   // Before the forces act: v^k = v − Δv (the convected pass has no forces).
   auto mapped = [lagrangian](const Grid<D>& g, long n) -> Vec<D> {
     return lagrangian ? Vec<D>(g.velocity[n] - g.velocity_change[n]) : g.velocity[n];
@@ -100,10 +110,14 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
   const long nodes = centre_of_mass.node_count();
 #pragma omp parallel
   {
-    std::vector<Vec<D>> force(bodies, Vec<D>::Zero());
-    SharedNode<D> node(bodies);
+    std::vector<Vec<D>>& force = thread_force_[omp_get_thread_num()];
+    std::fill(force.begin(), force.end(), Vec<D>::Zero());
+    SharedNode<D>& node = nodes_[omp_get_thread_num()];
 #pragma omp for schedule(static)
     for (long n = 0; n < nodes; ++n) {
+      int present = 0;  // most nodes hold one body or none: look before filling the node
+      for (int b = 0; b < bodies && present < 2; ++b) present += grids[b]->mass[n] > 0.0;
+      if (present < 2) continue;
       node.count = 0;
       for (int b = 0; b < bodies; ++b) {
         const Grid<D>& g = *grids[b];
@@ -116,7 +130,6 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
         node.membrane[node.count] = points.bodies[b].frames != nullptr;
         ++node.count;
       }
-      if (node.count < 2) continue;
       node.index = n;
       node.centre_of_mass = centre_of_mass.velocity[n];
       node.centre_of_mass_mapped = mapped(centre_of_mass, n);
