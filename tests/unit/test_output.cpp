@@ -86,8 +86,8 @@ TEST(Output, RunWritesCompleteFiles) {
   auto simulation = build_simulation<2>(c);
   OutputWriter<2> output(c.output, *simulation);
   RunControl control;
-  control.header.case_hash = "abc";
-  run_simulation<2>(*simulation, output, nullptr, control);
+  control.case_hash = "abc";
+  run_simulation(*simulation, output, nullptr, control);
 
   // history.csv: header with per-body columns, rows at t = 0, 0.005, 0.01.
   std::istringstream history(read_all(dir / "history.csv"));

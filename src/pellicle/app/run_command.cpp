@@ -2,12 +2,12 @@
 #include <omp.h>
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <optional>
 
 #include "pellicle/app/commands.hpp"
+#include "pellicle/app/stop_signals.hpp"
 #include "pellicle/app/terminal_progress.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/build.hpp"
@@ -87,12 +87,6 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
     std::fprintf(out, "warning   CFL number above 1: the run will stop at its first step\n");
 }
 
-//! The signal that asked the run to stop (SIGINT, SIGTERM), or 0.
-volatile std::sig_atomic_t stop_signal = 0;
-extern "C" void request_stop(int signal) {
-  stop_signal = signal;
-}
-
 template <int D>
 int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   std::optional<CheckpointHeader> saved;
@@ -129,22 +123,22 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   }
   OutputWriter<D>& output = *writer;
   TerminalProgress progress(isatty(STDERR_FILENO));
+  const CheckpointHeader header = checkpoint_header_for(source);
+  const std::string checkpoint_path = c.output.directory + "/checkpoint.h5";
   RunControl control;
-  control.header = checkpoint_header_for(source);
-  control.checkpoint_path = c.output.directory + "/checkpoint.h5";
+  control.case_hash = header.case_hash;
+  control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
   control.checkpoint_interval = c.output.checkpoint_interval;
-  control.stop = &stop_signal;
-  std::signal(SIGINT, request_stop);
-  std::signal(SIGTERM, request_stop);
+  control.stop = catch_stop_signals();
   try {
     const RunStatistics r =
-        run_simulation<D>(*simulation, output, o.quiet ? nullptr : &progress, control);
+        run_simulation(*simulation, output, o.quiet ? nullptr : &progress, control);
     if (r.interrupted_by) {
       std::fprintf(stderr,
                    "pellicle: interrupted (signal %d) at t=%g, step %ld; continue with "
                    "--restart %s\n",
                    r.interrupted_by, simulation->time(), simulation->step_count(),
-                   control.checkpoint_path.c_str());
+                   checkpoint_path.c_str());
       return 128 + r.interrupted_by;
     }
     if (!o.quiet)

@@ -6,11 +6,13 @@
 #include <cstdio>
 
 #include "pellicle/app/commands.hpp"
+#include "pellicle/app/stop_signals.hpp"
 #include "pellicle/app/terminal_progress.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/output.hpp"
+#include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
-#include "pellicle/io/surface_run.hpp"
+#include "pellicle/io/surface_output.hpp"
 
 namespace pellicle {
 
@@ -85,9 +87,17 @@ int run_surface(const CaseSource& source, const RunOptions& o, bool check_only) 
     throw InputError(SourceLocation{c.file, 0, 0}, "output.directory", e.what());
   }
   TerminalProgress progress(isatty(STDERR_FILENO));
+  RunControl control;
+  control.case_hash = hash_text(case_text(source));
+  control.stop = catch_stop_signals();
   try {
-    const RunStatistics r = run_surface_simulation<D>(
-        *simulation, *writer, o.quiet ? nullptr : &progress, hash_text(case_text(source)));
+    const RunStatistics r =
+        run_simulation(*simulation, *writer, o.quiet ? nullptr : &progress, control);
+    if (r.interrupted_by) {
+      std::fprintf(stderr, "pellicle: interrupted (signal %d) at t=%g, step %ld\n",
+                   r.interrupted_by, simulation->time(), simulation->step_count());
+      return 128 + r.interrupted_by;
+    }
     if (!o.quiet)
       std::fprintf(stderr, "done       %ld steps in %.2f s, %.3g point-steps/s, %zu points\n",
                    simulation->step_count(), r.wall_seconds, r.particle_steps_per_second,

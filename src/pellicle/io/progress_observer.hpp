@@ -1,17 +1,17 @@
 #pragma once
 //! The observer that reports a run's progress after every step, for MPM and surface runs
-//! alike: `Run` has time(), step_count() and settings().end_time; `Base` is its observer
-//! interface with after_step(const Run&).
+//! alike: `Run` has time(), step_count() and settings().end_time.
 
 #include <algorithm>
 #include <chrono>
 
+#include "pellicle/core/observer.hpp"
 #include "pellicle/core/progress.hpp"
 
 namespace pellicle {
 
-template <class Run, class Base>
-class ProgressObserver final : public Base {
+template <class Run>
+class ProgressObserver final : public RunObserver<Run> {
  public:
   ProgressObserver(ProgressListener* listener, std::chrono::steady_clock::time_point start)
       : listener_(listener), start_(start) {}

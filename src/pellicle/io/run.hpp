@@ -1,22 +1,27 @@
 #pragma once
-//! Drive a simulation to its end time with output and progress reporting. On a numerical
-//! failure the history and a final snapshot are still written, summary.json records the
-//! failure, and the NumericalError is rethrown for the caller to report (exit code 3).
+//! The one run pipeline of both engines (MPM Simulation<D>, SurfaceSimulation<D>): step to
+//! the end time with an output writer and a progress listener attached, write checkpoints
+//! where the engine has them, and stop cleanly on a signal. On a numerical failure the
+//! history and a final snapshot are still written, summary.json records the failure, and
+//! the NumericalError is rethrown for the caller to report (exit code 3).
+//!
+//! An engine has step(), finished(), time(), step_count(), point_count(), last_dt(),
+//! settings().end_time and add_observer/remove_observer(RunObserver<Engine>*); its output
+//! writer is a RunObserver<Engine> with finish(engine, status, case_hash, wall_seconds).
 
 #include <csignal>
+#include <functional>
 #include <string>
 
 #include "pellicle/core/progress.hpp"
-#include "pellicle/io/checkpoint.hpp"
-#include "pellicle/io/output.hpp"
-#include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
 
 //! Checkpoints and interruption of a run.
 struct RunControl {
-  CheckpointHeader header;           //!< identifies the case in checkpoints and summary.json
-  std::string checkpoint_path;       //!< where checkpoints go; empty: none are written
+  std::string case_hash;  //!< identifies the case in summary.json
+  //! Writes a checkpoint of the run's current state; empty: the run writes none.
+  std::function<void()> checkpoint;
   double checkpoint_interval = 0.0;  //!< simulated time between them; 0: only when stopped
   //! Set (to the signal number) by a signal handler: the run stops after the current step,
   //! writes a final checkpoint and its summary with status "interrupted".
@@ -29,8 +34,8 @@ struct RunStatistics {
   int interrupted_by = 0;  //!< the signal that stopped the run, or 0
 };
 
-template <int D>
-RunStatistics run_simulation(Simulation<D>& simulation, OutputWriter<D>& output,
-                             ProgressListener* progress, const RunControl& control);
+template <class Engine, class Output>
+RunStatistics run_simulation(Engine& engine, Output& output, ProgressListener* progress,
+                             const RunControl& control);
 
 }  // namespace pellicle

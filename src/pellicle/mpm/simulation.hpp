@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "pellicle/core/observer.hpp"
 #include "pellicle/core/types.hpp"
 #include "pellicle/mpm/contact/contact_model.hpp"
 #include "pellicle/mpm/grid.hpp"
@@ -38,13 +39,11 @@ struct SystemState {
   double total() const { return kinetic + strain + internal + gravitational; }
 };
 
+template <int D>
+class Simulation;
 //! Called after every step (output writers, probes, progress).
 template <int D>
-class StepObserver {
- public:
-  virtual ~StepObserver() = default;
-  virtual void after_step(const Simulation<D>& simulation) = 0;
-};
+using StepObserver = RunObserver<Simulation<D>>;
 
 template <int D>
 class Simulation final : private Stages {
@@ -81,6 +80,7 @@ class Simulation final : private Stages {
 
   double time() const { return time_; }
   long step_count() const { return step_; }
+  long point_count() const { return points_.size(); }
   double last_dt() const { return last_dt_; }
   //! Largest point speed after the last step (part of the next step's CFL signal speed).
   double max_point_speed() const { return max_speed_; }

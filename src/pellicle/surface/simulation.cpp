@@ -95,6 +95,7 @@ void SurfaceSimulation<D>::step() {
       curvature_.assign(cloud_.size(), std::numeric_limits<double>::quiet_NaN());
     throw NumericalError({time_, steps_, "surface", e.context().point}, e.reason());
   }
+  for (auto* o : observers_) o->after_step(*this);
 }
 
 template <int D>
@@ -153,10 +154,7 @@ void SurfaceSimulation<D>::check_state() const {
 
 template <int D>
 void SurfaceSimulation<D>::run() {
-  while (!finished()) {
-    step();
-    for (auto* o : observers_) o->after_step(*this);
-  }
+  while (!finished()) step();
 }
 
 template <int D>

@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "pellicle/core/observer.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/management.hpp"
 #include "pellicle/surface/movement.hpp"
@@ -48,12 +49,9 @@ struct SurfaceSettings {
 template <int D>
 class SurfaceSimulation;
 
+//! Called after every step (output writers, progress).
 template <int D>
-class SurfaceObserver {
- public:
-  virtual ~SurfaceObserver() = default;
-  virtual void after_step(const SurfaceSimulation<D>& s) = 0;
-};
+using SurfaceObserver = RunObserver<SurfaceSimulation<D>>;
 
 template <int D>
 class SurfaceSimulation {
@@ -64,13 +62,16 @@ class SurfaceSimulation {
                     std::array<PointFormula, D> velocity, std::unique_ptr<SurfacePde<D>> pde,
                     const std::vector<Vec<D>>* reference = nullptr);
 
+  //! One step (§3.7 order), then the observers.
   void step();
-  //! Steps until end_time, calling the observers after each.
+  //! Steps until end_time.
   void run();
   bool finished() const { return time_ >= settings_.end_time - 1e-9 * settings_.dt; }
 
   double time() const { return time_; }
   long step_count() const { return steps_; }
+  long point_count() const { return static_cast<long>(cloud_.size()); }
+  double last_dt() const { return settings_.dt; }
   const SurfaceSettings& settings() const { return settings_; }
   PointCloud<D>& cloud() { return cloud_; }
   const PointCloud<D>& cloud() const { return cloud_; }
