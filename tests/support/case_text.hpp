@@ -18,6 +18,24 @@ std::unique_ptr<Simulation<D>> simulation_from_text(
   return build_simulation<D>(c);
 }
 
+//! The text of the InputError that reading and building `text` (2D or 3D, by the case)
+//! raises, "" when it is accepted.
+inline std::string problems_of(const std::string& text, const std::vector<std::string>& sets = {}) {
+  try {
+    const auto source = case_source_from_text(text, "case.toml", sets);
+    if (case_dimension(*source) == 2) {
+      Case<2> c = read_case<2>(*source);
+      build_simulation<2>(c);
+    } else {
+      Case<3> c = read_case<3>(*source);
+      build_simulation<3>(c);
+    }
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 //! Body mass-weighted mean of a point quantity.
 template <int D, class F>
 auto body_mean(const Particles<D>& p, int body, F&& value) {

@@ -31,22 +31,7 @@ material = "steel"
 region = { shape = "box", lower = [0.2, 0.2], upper = [0.6, 0.6] }
 )";
 
-// The text of the InputError that reading `text` raises ("" when it is accepted).
-std::string problems_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-  try {
-    const auto source = case_source_from_text(text, "case.toml", sets);
-    if (case_dimension(*source) == 2) {
-      Case<2> c = read_case<2>(*source);
-      build_simulation<2>(c);
-    } else {
-      Case<3> c = read_case<3>(*source);
-      build_simulation<3>(c);
-    }
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::problems_of;
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);

@@ -313,15 +313,7 @@ material = "steel"
 region = { shape = "box", lower = [0.2, 0.2], upper = [0.6, 0.6] }
 )";
 
-// The text of the InputError that building the case raises ("" when it is accepted).
-std::string problems_of(const std::string& text, const std::vector<std::string>& sets = {}) {
-  try {
-    testing::simulation_from_text<2>(text, sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::problems_of;
 
 TEST(J2Plasticity, CaseKeysAreRead) {
   EXPECT_EQ(problems_of(kCase), "");
