@@ -4,6 +4,7 @@
 #include "pellicle/io/case_source.hpp"
 #include "pellicle/io/surface_case.hpp"
 #include "pellicle/io/toml_parameters.hpp"
+#include "pellicle/surface/builder.hpp"
 
 namespace pellicle {
 
@@ -156,11 +157,8 @@ SurfaceCase<D> read_surface_case(const CaseSource& source) {
 
 template <int D>
 std::unique_ptr<SurfaceSimulation<D>> build_surface_simulation(SurfaceCase<D>& c) {
-  PointCloud<D> cloud;
-  for (std::size_t i = 0; i < c.sample.size(); ++i)
-    cloud.add_point(c.sample.points[i], c.smoothing_length, c.sample.boundary[i] != 0);
-  return std::make_unique<SurfaceSimulation<D>>(std::move(cloud), c.settings, c.velocity,
-                                                std::move(c.pde), &c.sample.normals);
+  return build_surface_simulation<D>(c.sample, c.smoothing_length, c.settings, c.velocity,
+                                     std::move(c.pde));
 }
 
 template SurfaceCase<2> read_surface_case<2>(const CaseSource&);
