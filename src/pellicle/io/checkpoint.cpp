@@ -165,7 +165,9 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
       write_number<long>(file, "step", s.step_count());
       write_number<double>(file, "last_dt", s.last_dt());
       write_number<double>(file, "max_speed", s.max_point_speed());
-      write_text(file, "rng", "isosurface frames: one generator per cell, seeded from 20000");
+      write_text(file, "rng",
+                 "isosurface frames: one generator per cell, seeded from " +
+                     std::to_string(FrameSetup<D>{}.seed));
       const auto& p = s.points();
       Handle bodies = group(file, "bodies", true);
       for (std::size_t b = 0; b < p.bodies.size(); ++b) {
