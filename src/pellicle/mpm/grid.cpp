@@ -113,6 +113,18 @@ void Grid<D>::integrate(double dt) {
 }
 
 template <int D>
+bool Grid<D>::return_to_face(Vec<D>& x) const {
+  const double tolerance = 1e-6 * h_;
+  for (int d = 0; d < D; ++d) {
+    const bool walled_low = faces_[2 * d] != FaceCondition::free;
+    const bool walled_high = faces_[2 * d + 1] != FaceCondition::free;
+    if (walled_low && x[d] < lower_[d] && x[d] > lower_[d] - tolerance) x[d] = lower_[d];
+    if (walled_high && x[d] > upper_[d] && x[d] < upper_[d] + tolerance) x[d] = upper_[d];
+  }
+  return contains(x);
+}
+
+template <int D>
 void Grid<D>::velocities_from_momentum() {
   constrain(momentum);
 #pragma omp parallel for schedule(static)

@@ -63,6 +63,9 @@ class Grid {
     return (x.array() >= lower_.array()).all() && (x.array() <= upper_.array()).all();
   }
   const FaceConditions<D>& faces() const { return faces_; }
+  //! A point just beyond a wall or symmetry face (fixed or slip), by no more than round-off
+  //! (1e-6 of a cell), is put back on the face; true when x is then inside the domain.
+  bool return_to_face(Vec<D>& x) const;
 
   //! Momentum-form explicit update (IJNME eqs 9, 11): velocity = (p + Δt f)/m and the
   //! change over the step, both with the face conditions applied and the ghosts mirrored.

@@ -117,12 +117,15 @@ class TransferImpl final : public Transfer<D> {
         }
       });
       // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
-      const Vec<D> x = points.position[p] + dt * v_lagrangian;
+      Vec<D> x = points.position[p] + dt * v_lagrangian;
       Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
+      // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
+      // it: the mirrored ghosts cancel its normal velocity only to round-off.
+      const bool inside = grid.contains(x) || grid.return_to_face(x);
       points.position[p] = x;
       points.velocity[p] = v;
       if (apic_update) affine_out[p] = affine;
-      if (!grid.contains(x) || !v.allFinite()) first_bad = std::min(first_bad, p);
+      if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
       max_speed = std::max(max_speed, v.norm());
     }
     if (first_bad != std::numeric_limits<long>::max()) {
