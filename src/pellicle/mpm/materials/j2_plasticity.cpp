@@ -8,19 +8,15 @@ namespace pellicle {
 
 template <int D>
 J2Plasticity<D>::J2Plasticity(Kinematics kinematics, double density, const J2Constants& constants)
-    : Material<D>(kinematics), density_(density), constants_(constants) {}
+    : Material<D>(kinematics),
+      density_(density),
+      constants_(constants),
+      elastic_(kinematics, density, constants.young, constants.poisson) {}
 
 template <int D>
 void J2Plasticity<D>::declare_columns(Particles<D>& points) {
   Material<D>::declare_columns(points);  // strain
   plastic_strain_ = points.template declare<double>({plastic_strain_column, "1", true, true});
-}
-
-template <int D>
-double J2Plasticity<D>::wave_modulus() const {
-  const double E = constants_.young, nu = constants_.poisson;
-  if (this->kinematics() == Kinematics::plane_stress) return E / (1.0 - nu * nu);
-  return constants_.lambda() + 2.0 * constants_.shear();
 }
 
 template <int D>
@@ -64,20 +60,7 @@ double J2Plasticity<D>::strain_energy(const Particles<D>& points, long begin, lo
 
 template <int D>
 Sym<D> J2Plasticity<D>::stress_from_strain(const Sym<D>& strain) const {
-  const double E = constants_.young, nu = constants_.poisson, G = constants_.shear();
-  Sym<D> s;
-  if constexpr (D == 2) {
-    if (this->kinematics() == Kinematics::plane_stress) {
-      // In-plane plane-stress law, as the elastic predictor (P11).
-      const double c = E / (1.0 - nu * nu);
-      s << c * (strain[0] + nu * strain[1]), c * (nu * strain[0] + strain[1]), 0.0,
-          2.0 * G * strain[3];
-      return s;
-    }
-  }
-  s = 2.0 * G * strain;  // (P1)
-  s.template head<3>().array() += constants_.lambda() * trace<D>(strain);
-  return s;
+  return elastic_.stress_from_strain(strain);  // (P1); σ_zz = 0 in plane stress (P11)
 }
 
 template <int D>

@@ -25,6 +25,7 @@
 #include <memory>
 
 #include "pellicle/mpm/materials/j2_return_mapping.hpp"
+#include "pellicle/mpm/materials/linear_elastic.hpp"
 #include "pellicle/mpm/materials/material.hpp"
 
 namespace pellicle {
@@ -52,11 +53,12 @@ class J2Plasticity final : public Material<D> {
   const J2Constants& constants() const { return constants_; }
   //! Modulus M with c = sqrt(M/ρ): the elastic P-wave modulus, or E/(1−ν²) in plane stress.
   //! The elastic–plastic tangent is never stiffer, so the elastic speed bounds the CFL step.
-  double wave_modulus() const;
+  double wave_modulus() const { return elastic_.wave_modulus(); }
 
  private:
   double density_;
   J2Constants constants_;
+  LinearElastic<D> elastic_;  //!< the elastic part: C : ε and the wave modulus
   Column<double> plastic_strain_;
 };
 
