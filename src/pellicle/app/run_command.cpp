@@ -55,7 +55,7 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                  b.count(), mass, c.material_names[b.material].c_str());
   }
   const double dt = s.planned_dt();
-  const double cfl = dt * s.max_signal_speed() / g.cell();
+  const double cfl = dt * s.max_wave_speed() / g.cell();
   for (const auto& b : c.bodies) {
     if (!b.membrane) continue;
     std::fprintf(out,
@@ -83,8 +83,11 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                std::ceil(c.settings.end_time / dt));
   std::fprintf(out, "memory    about %.1f MB\n", s.memory_estimate_bytes() / 1048576.0);
   std::fprintf(out, "output    %s\n", c.output.directory.c_str());
-  if (cfl > 1.0)
-    std::fprintf(out, "warning   CFL number above 1: the run will stop at its first step\n");
+  if (cfl > c.settings.cfl_limit)
+    std::fprintf(out,
+                 "warning   CFL number c dt / h above solver.cfl_limit = %g: the run will stop at "
+                 "its first step\n",
+                 c.settings.cfl_limit);
 }
 
 template <int D>

@@ -9,7 +9,8 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   SimulationBuilder<D> builder(c.lower, c.upper, c.cell, c.faces);
   builder.settings(c.settings).kernel(c.kernel, c.transfer).gravity(c.gravity);
   for (auto& material : c.materials) builder.material(std::move(material));
-  for (auto& body : c.bodies) builder.body(std::move(static_cast<BodySetup<D>&>(body)));
+  // Copied, not moved: `check` describes the bodies after building.
+  for (const auto& body : c.bodies) builder.body(static_cast<const BodySetup<D>&>(body));
   builder.contact(std::move(c.contact));
   for (auto& boundary : c.boundaries) builder.hook(std::move(boundary));
   try {

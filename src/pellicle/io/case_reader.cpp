@@ -291,10 +291,22 @@ void read_membrane_or_region(TomlParameters& t, Case<D>& c, BodySpec<D>& b) {
     std::vector<std::string> estimators;
     for (const auto& e : frame_estimators<D>()) estimators.push_back(e.name);
     b.frames = m->choice("frames", estimators, "connectivity");
-    const std::string side = m->choice("orientation", {"propagate", "outward"}, "propagate");
-    b.orientation = side == "outward" ? NormalOrientation::outward : NormalOrientation::propagate;
+    if (m->has("orientation")) {
+      const std::string side =
+          m->choice("orientation", {"propagate", "outward", "away-from-inside"});
+      b.orientation = side == "outward"            ? NormalOrientation::outward
+                      : side == "away-from-inside" ? NormalOrientation::away_from_inside
+                                                   : NormalOrientation::propagate;
+    }
   } else {
-    b.region = make_region<D>(*t.sub_table("region", true));
+    auto region = t.sub_table("region", true);
+    if (region->has("inside")) {  // the inside of a membrane body, checked when it is built
+      b.inside = region->text("inside");
+      b.gap = region->number_or("gap", -1.0, NumberRange::non_negative());
+      if (b.inside.empty()) region->fail("inside", "expected the name of a membrane body");
+    } else {
+      b.region = make_region<D>(*region);
+    }
   }
   const Material<D>* material =
       b.material < static_cast<int>(c.materials.size()) ? c.materials[b.material].get() : nullptr;

@@ -64,6 +64,13 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
   if (simulation.contact_forces())
     for (const auto& b : simulation.points().bodies)
       for (int d = 0; d < D; ++d) history_ << ',' << b.name << ".contact_" << axis_names[d];
+  for (const auto& pair : simulation.enclosed()) {
+    const auto& bodies = simulation.points().bodies;
+    const std::string& m = bodies[pair.membrane].name;
+    history_ << ',' << m << ".enclosed_volume," << m << ".tension," << bodies[pair.filler].name
+             << ".escaped";
+  }
+  escaped_.assign(simulation.enclosed().size(), 0);
   for (const auto& probe : probes_)
     for (const auto& column : probe.columns()) history_ << ',' << column;
   history_ << '\n' << std::setprecision(12);
@@ -95,6 +102,13 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
   if (const auto* forces = simulation.contact_forces())
     for (const auto& f : *forces)
       for (int d = 0; d < D; ++d) history_ << ',' << f[d];
+  for (std::size_t k = 0; k < simulation.enclosed().size(); ++k) {
+    const auto& pair = simulation.enclosed()[k];
+    const long escaped = escaped_points(p, pair);
+    escaped_[k] = std::max(escaped_[k], escaped);
+    history_ << ',' << enclosed_volume(p, pair, simulation.settings().kinematics) << ','
+             << mean_tension(p, pair) << ',' << escaped;
+  }
   for (const auto& probe : probes_)
     for (double v : probe.values(simulation)) history_ << ',' << v;
   history_ << '\n';
@@ -168,7 +182,16 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
     for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(vel[d]);
     j << "]}";
   }
-  j << "\n  }\n}\n";
+  j << "\n  }";
+  if (!simulation.enclosed().empty()) {
+    // The most points of each filling body ever seen outside its membrane (history rows).
+    j << ",\n  \"escaped_points\": {";
+    for (std::size_t k = 0; k < escaped_.size(); ++k)
+      j << (k ? ", " : "") << json_string(p.bodies[simulation.enclosed()[k].filler].name) << ": "
+        << escaped_[k];
+    j << "}";
+  }
+  j << "\n}\n";
   write_file_atomically(settings_.directory + "/summary.json", j.str());
 }
 

@@ -21,7 +21,8 @@ namespace pellicle {
 template <int D>
 class OutputWriter final : public StepObserver<D> {
  public:
-  //! Creates the directory, writes the history header, the t = 0 row and snapshot.
+  //! Creates the directory, writes the history header, the t = 0 row and snapshot. Bodies that
+  //! fill a membrane add <membrane>.enclosed_volume, <membrane>.tension and <filler>.escaped.
   OutputWriter(const OutputSettings& settings, const Simulation<D>& simulation,
                std::vector<Probe<D>> probes = {});
 
@@ -44,6 +45,7 @@ class OutputWriter final : public StepObserver<D> {
   double next_history_ = 0.0, next_snapshot_ = 0.0;
   long last_history_step_ = -1, last_snapshot_step_ = -1;
   int snapshots_ = 0;
+  std::vector<long> escaped_;  //!< per enclosed body: most filling points seen outside
 };
 
 //! 16 hex digits of the FNV-1a 64-bit hash of a text (identifies the case that was run).

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "pellicle/geometry/enclosure.hpp"
 #include "pellicle/geometry/fill.hpp"
 
 namespace pellicle {
@@ -80,9 +81,9 @@ namespace {
 //! Where a body's points are and what each stands for: filled sub-cells of a region, or the
 //! samples of a membrane (volume = length or area × thickness, IJNME §3: m = ρ Δs t).
 template <int D>
-std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const Vec<D>& lower,
-                                                   const Vec<D>& upper, double cell,
-                                                   Kinematics kinematics) {
+std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const Region<D>* region,
+                                                   const Vec<D>& lower, const Vec<D>& upper,
+                                                   double cell, Kinematics kinematics) {
   std::vector<std::pair<Vec<D>, double>> out;
   const bool axisymmetric = kinematics == Kinematics::axisymmetric;
   if (b.membrane) {
@@ -91,11 +92,22 @@ std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const 
       const double v = b.membrane->measure[i] * b.thickness;
       out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
     }
-  } else if (b.region) {
-    for (const auto& x : fill_region<D>(*b.region, lower, upper, cell, b.points_per_cell))
+  } else if (region) {
+    for (const auto& x : fill_region<D>(*region, lower, upper, cell, b.points_per_cell))
       out.emplace_back(x, point_volume<D>(cell, b.points_per_cell, kinematics, x));
   }
   return out;
+}
+
+//! The grid's wall and symmetry faces as planes.
+template <int D>
+std::vector<MirrorPlane> mirror_planes(const Vec<D>& lower, const Vec<D>& upper,
+                                       const FaceConditions<D>& faces) {
+  std::vector<MirrorPlane> planes;
+  for (int f = 0; f < 2 * D; ++f)
+    if (faces[f] != FaceCondition::free)
+      planes.push_back({f / 2, f % 2 == 0 ? lower[f / 2] : upper[f / 2]});
+  return planes;
 }
 
 }  // namespace
@@ -112,6 +124,42 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
   if (bodies_.empty()) problems.push_back({-1, "body", "no body"});
 
   Grid<D> grid(lower_, upper_, cell_, faces_);
+  const std::vector<MirrorPlane> mirrors = mirror_planes<D>(lower_, upper_, faces_);
+  // Bodies filling a membrane's inside: their regions, and which membrane each fills.
+  std::vector<RegionPtr<D>> inside_regions(bodies_.size());
+  std::vector<int> filled_by(bodies_.size(), -1);
+  for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    const BodySetup<D>& b = bodies_[index];
+    if (b.inside.empty()) continue;
+    const int i = static_cast<int>(index);
+    const auto it = std::find_if(bodies_.begin(), bodies_.end(),
+                                 [&](const auto& m) { return m.name == b.inside && m.membrane; });
+    if (it == bodies_.end()) {
+      problems.push_back(
+          {i, "region.inside", "body '" + b.name + "': no membrane body named '" + b.inside + "'"});
+      continue;
+    }
+    const MembraneGeometry<D>& m = *it->membrane;
+    auto enclosure = std::make_shared<const Enclosure<D>>(
+        m.points, 0, static_cast<long>(m.points.size()), m.connectivity, mirrors,
+        std::max(m.longest_gap, 1e-9 * cell_));
+    if (!enclosure->problem().empty()) {
+      problems.push_back({i, "region.inside",
+                          "body '" + b.name + "' cannot fill membrane '" + b.inside +
+                              "': " + enclosure->problem()});
+      continue;
+    }
+    const double gap = b.gap >= 0.0 ? b.gap : 0.5 / b.points_per_cell;
+    inside_regions[index] = make_enclosed_region<D>(std::move(enclosure), gap * cell_);
+    filled_by[it - bodies_.begin()] = i;
+  }
+  std::vector<std::vector<std::pair<Vec<D>, double>>> placed(bodies_.size());
+  for (std::size_t index = 0; index < bodies_.size(); ++index)
+    placed[index] = body_points(
+        bodies_[index],
+        inside_regions[index] ? inside_regions[index].get() : bodies_[index].region.get(), lower_,
+        upper_, cell_, settings_.kinematics);
+
   Particles<D> points;
   for (auto& material : materials_) material->declare_columns(points);
   for (std::size_t index = 0; index < bodies_.size(); ++index) {
@@ -134,8 +182,9 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                           "kernel " + kernel_ +
                               " has one particle size (h / points_per_cell): "
                               "every body must use the same points_per_cell"});
-    const auto positions = body_points(b, lower_, upper_, cell_, settings_.kinematics);
+    const auto& positions = placed[index];
     if (positions.empty()) {
+      if (!b.inside.empty() && !inside_regions[index]) continue;  // reported above
       problems.push_back(
           {i, "region", "body '" + b.name + "': the region holds no point inside the grid"});
       continue;
@@ -165,7 +214,14 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       setup.connectivity = b.membrane->connectivity;
       setup.grid_origin = lower_;
       setup.cell = cell_;
-      setup.orientation = b.orientation;
+      setup.mirrors = mirrors;
+      if (filled_by[index] >= 0) {
+        for (const auto& entry : placed[filled_by[index]])
+          setup.orientation.inside.push_back(entry.first);
+      }
+      setup.orientation.rule =
+          b.orientation.value_or(filled_by[index] >= 0 ? NormalOrientation::away_from_inside
+                                                       : NormalOrientation::propagate);
       for (const auto& e : frame_estimators<D>())
         if (e.name == b.frames) frames = e.make(setup);
       if (!frames)
@@ -217,6 +273,13 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       kernel->make(options, bodies_.front().points_per_cell), gravity_);
   simulation->set_contact(std::move(contact_));
   for (auto& hook : hooks_) simulation->add_hook(std::move(hook));
+  for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    if (filled_by[index] < 0) continue;
+    const BodySetup<D>& m = bodies_[index];
+    simulation->add_enclosed({static_cast<int>(index), filled_by[index], m.membrane->connectivity,
+                              mirrors, std::max(m.membrane->longest_gap, 1e-9 * cell_),
+                              m.thickness});
+  }
   return simulation;
 }
 

@@ -40,12 +40,19 @@ struct BodySetup {
   //! Points (first, last; indices within the body) that take the initial stress or strain;
   //! default all (the slack of IJNME §3.2 is strain on points 4–9 of a string only).
   std::pair<long, long> initial_points{0, -1};
-  RegionPtr<D> region;  //!< solids: the region the points fill
+  std::shared_ptr<const Region<D>> region;  //!< solids: the region the points fill
+  //! Instead of `region`: fill the inside of the membrane body of this name (closed, or
+  //! closed by the wall and symmetry faces its ends lie on), keeping `gap` cells clear of it;
+  //! a gap below 0 means half a point spacing (1 / (2 points_per_cell) cells).
+  std::string inside;
+  double gap = -1.0;
   //! Membranes: the sampled curve or surface, its thickness and frame estimator.
   std::optional<MembraneGeometry<D>> membrane;
   double thickness = 0.0;
   std::string frames = "connectivity";
-  NormalOrientation orientation = NormalOrientation::propagate;
+  //! How first normal signs are chosen; default: away from the body filling its inside if
+  //! there is one (NormalOrientation::away_from_inside), else propagate.
+  std::optional<NormalOrientation> orientation;
   std::vector<std::pair<long, double>> point_masses;      //!< (index in body, mass) overrides
   std::vector<std::pair<long, Vec<D>>> point_velocities;  //!< (index in body, velocity) overrides
   std::optional<double> density;  //!< overrides the material's reference density

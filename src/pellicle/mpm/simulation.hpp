@@ -10,6 +10,7 @@
 #include "pellicle/core/observer.hpp"
 #include "pellicle/core/types.hpp"
 #include "pellicle/mpm/contact/contact_model.hpp"
+#include "pellicle/mpm/enclosed_body.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/grid_fields.hpp"
 #include "pellicle/mpm/materials/material.hpp"
@@ -25,7 +26,9 @@ struct SimulationSettings {
   Kinematics kinematics = Kinematics::plane_strain;
   double fixed_dt = 0.0;      //!< > 0: fixed time step
   double cfl_fraction = 0.0;  //!< > 0: Δt = fraction × h / max(c + |v|), every step
-  double cfl_limit = 1.0;     //!< a step whose CFL number exceeds this stops the run
+  //! A step whose wave Courant number c Δt / h, or whose transport number |v| Δt / h,
+  //! exceeds this stops the run (thesis §8.4: the critical step is h/c to 2h/c).
+  double cfl_limit = 1.0;
   double end_time = 1.0;
 };
 
@@ -73,6 +76,9 @@ class Simulation final : private Stages {
   //! Add a hook (boundary condition, contact, …) acting at the step's named points.
   void add_hook(std::unique_ptr<StepHook<D>> hook);
   const std::vector<std::unique_ptr<StepHook<D>>>& hooks() const { return hooks_; }
+  //! Bodies that fill a membrane's inside (measured in history.csv, enclosed_body.hpp).
+  void add_enclosed(EnclosedBody<D> pair) { enclosed_.push_back(std::move(pair)); }
+  const std::vector<EnclosedBody<D>>& enclosed() const { return enclosed_; }
   std::vector<std::unique_ptr<StepHook<D>>>& hooks() { return hooks_; }
 
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
@@ -84,12 +90,16 @@ class Simulation final : private Stages {
   double last_dt() const { return last_dt_; }
   //! Largest point speed after the last step (part of the next step's CFL signal speed).
   double max_point_speed() const { return max_speed_; }
-  //! Courant number Δt max(c + |v|)/h of the last step.
+  //! Wave Courant number Δt max(c)/h of the last step: the stability number of the
+  //! Lagrangian step (thesis §8.4), which the point speeds do not enter.
   double cfl_number() const { return cfl_number_; }
   //! The time step the next call of step() would take.
   double planned_dt() const;
   SystemState<D> state() const;
-  //! Largest material wave speed plus largest point speed (the CFL signal speed).
+  //! Largest material wave speed c (the CFL number's speed).
+  double max_wave_speed() const;
+  //! Largest wave speed plus largest point speed: the speed a time step from solver.cfl
+  //! is chosen for (a margin over the stability limit, thesis §8.4).
   double max_signal_speed() const;
   //! Rough memory use of points, stencils and grid (for `pellicle check`).
   std::size_t memory_estimate_bytes() const;
@@ -125,7 +135,8 @@ class Simulation final : private Stages {
   void observe(double dt);  // stage 8
   void update_frames();
   double time_step(double signal_speed) const;
-  long fastest_point() const;  //!< point with the largest c + |v| (for CFL failures)
+  //! The point with the largest wave speed (waves) or point speed (otherwise), for failures.
+  long fastest_point(bool waves) const;
   [[noreturn]] void fail(long point, const std::string& what) const;
 
   SimulationSettings settings_;
@@ -135,6 +146,7 @@ class Simulation final : private Stages {
   std::unique_ptr<Transfer<D>> transfer_;
   std::unique_ptr<Scheme> scheme_;
   std::vector<std::unique_ptr<StepHook<D>>> hooks_;
+  std::vector<EnclosedBody<D>> enclosed_;
   ContactModel<D>* contact_ = nullptr;  //!< one of hooks_, or null
   Vec<D> gravity_;
   std::vector<StepObserver<D>*> observers_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/geometry/enclosure.hpp"
 #include "pellicle/geometry/membrane_geometry.hpp"
 
 namespace pellicle {
@@ -19,6 +20,20 @@ namespace pellicle {
 enum class NormalOrientation {
   propagate,  //!< from the body's first point through neighbours, so neighbours agree
   outward,    //!< away from the centroid of the body's points (closed curves and surfaces)
+  //! away from the points of the body the membrane encloses (its gas): each normal faces
+  //! away from the mean of the enclosed points within a cell of it, so pressure pushes along
+  //! +n whatever the membrane's shape (points with none near follow their neighbours)
+  away_from_inside,
+};
+
+//! The rule for first signs, and for away_from_inside the enclosed body's points.
+template <int D>
+struct FrameOrientation {
+  FrameOrientation(NormalOrientation rule = NormalOrientation::propagate,
+                   std::vector<Vec<D>> inside = {})
+      : rule(rule), inside(std::move(inside)) {}
+  NormalOrientation rule;
+  std::vector<Vec<D>> inside;
 };
 
 //! What an estimator may need to know: the generated connectivity (only `connectivity`
@@ -28,7 +43,9 @@ struct FrameSetup {
   MembraneConnectivity connectivity;
   Vec<D> grid_origin = Vec<D>::Zero();  //!< position of a grid node
   double cell = 1.0;
-  NormalOrientation orientation = NormalOrientation::propagate;
+  FrameOrientation<D> orientation;
+  //! Wall and symmetry faces of the grid: an open end on one continues into its mirror image.
+  std::vector<MirrorPlane> mirrors;
   unsigned seed = 20000;  //!< seeds the isosurface method's extra points (reproducible)
 };
 
@@ -64,7 +81,14 @@ Vec3 continue_tangent(const Vec3& previous, const Vec3& normal);
 //! (so n is t turned +90°); 3D tangents are continued from the previous ones.
 template <int D>
 void complete_frames(const std::vector<Vec<D>>& position, long begin, long end,
-                     NormalOrientation orientation, const std::vector<Vec<D>>& previous,
+                     const FrameOrientation<D>& orientation, const std::vector<Vec<D>>& previous,
                      std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent, double cell);
+
+//! The side each normal of points [begin, end) faces relative to the enclosed points: +1 away
+//! from the mean of those within a cell, −1 towards it, 0 when none is that near.
+template <int D>
+std::vector<int> sides_from_inside(const std::vector<Vec<D>>& position, long begin, long end,
+                                   const std::vector<Vec<D>>& normal,
+                                   const std::vector<Vec<D>>& inside, double cell);
 
 }  // namespace pellicle

@@ -10,19 +10,16 @@ namespace pellicle {
 
 namespace {
 
-//! Flip normals of points [begin, end) that have no previous normal so that neighbouring
-//! points (within a cell of each other) agree, walking outwards from the first point of each
-//! connected piece.
+//! Flip normals of points [begin, end) that are not fixed so that neighbouring points (within
+//! a cell of each other) agree, walking outwards from the fixed points, then from the first
+//! point of each connected piece that has none.
 template <int D>
 void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::vector<bool>& fixed,
                std::vector<Vec<D>>& normal, double cell) {
   const CellGroups<D> groups(x, begin, end, Vec<D>::Zero(), cell);
   std::vector<char> visited(end - begin, 0);
   std::deque<long> queue;
-  for (long start = begin; start < end; ++start) {
-    if (visited[start - begin] || fixed[start - begin]) continue;
-    visited[start - begin] = 1;
-    queue.push_back(start);
+  auto spread = [&] {
     while (!queue.empty()) {
       const long p = queue.front();
       queue.pop_front();
@@ -30,7 +27,7 @@ void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::ve
       for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
       groups.for_each_around(c, [&](int g) {
         for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
-          if (visited[*q - begin] || fixed[*q - begin]) continue;
+          if (visited[*q - begin]) continue;
           if ((x[*q] - x[p]).squaredNorm() > cell * cell) continue;
           if (normal[*q].dot(normal[p]) < 0.0) normal[*q] = -normal[*q];
           visited[*q - begin] = 1;
@@ -38,14 +35,47 @@ void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::ve
         }
       });
     }
+  };
+  // Points whose side is settled go first: their neighbours follow them.
+  for (long p = begin; p < end; ++p)
+    if (fixed[p - begin]) visited[p - begin] = 1, queue.push_back(p);
+  spread();
+  for (long start = begin; start < end; ++start) {
+    if (visited[start - begin]) continue;
+    visited[start - begin] = 1;
+    queue.push_back(start);
+    spread();
   }
 }
 
 }  // namespace
 
 template <int D>
+std::vector<int> sides_from_inside(const std::vector<Vec<D>>& x, long begin, long end,
+                                   const std::vector<Vec<D>>& normal,
+                                   const std::vector<Vec<D>>& inside, double cell) {
+  std::vector<int> side(end - begin, 0);
+  if (inside.empty()) return side;
+  const CellGroups<D> groups(inside, 0, static_cast<long>(inside.size()), Vec<D>::Zero(), cell);
+  for (long p = begin; p < end; ++p) {
+    IVec<D> c;
+    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
+    Vec<D> sum = Vec<D>::Zero();
+    long count = 0;
+    groups.for_each_around(c, [&](int g) {
+      for (const long* q = groups.begin(g); q != groups.end(g); ++q)
+        if ((inside[*q] - x[p]).squaredNorm() <= cell * cell) sum += inside[*q], ++count;
+    });
+    if (count == 0) continue;
+    const double facing = normal[p].dot(x[p] - sum / static_cast<double>(count));
+    side[p - begin] = facing > 0.0 ? 1 : facing < 0.0 ? -1 : 0;
+  }
+  return side;
+}
+
+template <int D>
 void complete_frames(const std::vector<Vec<D>>& x, long begin, long end,
-                     NormalOrientation orientation, const std::vector<Vec<D>>& previous,
+                     const FrameOrientation<D>& orientation, const std::vector<Vec<D>>& previous,
                      std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent, double cell) {
   std::vector<bool> fixed(end - begin, false);
   bool any_new = false;
@@ -58,7 +88,15 @@ void complete_frames(const std::vector<Vec<D>>& x, long begin, long end,
     }
   }
   if (any_new) {
-    if (orientation == NormalOrientation::outward) {
+    if (orientation.rule == NormalOrientation::away_from_inside) {
+      const auto side = sides_from_inside<D>(x, begin, end, normal, orientation.inside, cell);
+      for (long p = begin; p < end; ++p) {
+        if (fixed[p - begin] || side[p - begin] == 0) continue;
+        if (side[p - begin] < 0) normal[p] = -normal[p];
+        fixed[p - begin] = true;  // settled here; the rest follow their neighbours
+      }
+      propagate<D>(x, begin, end, fixed, normal, cell);
+    } else if (orientation.rule == NormalOrientation::outward) {
       Vec<D> centroid = Vec<D>::Zero();
       for (long p = begin; p < end; ++p) centroid += x[p];
       centroid /= static_cast<double>(end - begin);
@@ -77,11 +115,17 @@ void complete_frames(const std::vector<Vec<D>>& x, long begin, long end,
   }
 }
 
-template void complete_frames<2>(const std::vector<Vec2>&, long, long, NormalOrientation,
+template void complete_frames<2>(const std::vector<Vec2>&, long, long, const FrameOrientation<2>&,
                                  const std::vector<Vec2>&, std::vector<Vec2>&, std::vector<Vec2>&,
                                  double);
-template void complete_frames<3>(const std::vector<Vec3>&, long, long, NormalOrientation,
+template void complete_frames<3>(const std::vector<Vec3>&, long, long, const FrameOrientation<3>&,
                                  const std::vector<Vec3>&, std::vector<Vec3>&, std::vector<Vec3>&,
                                  double);
+template std::vector<int> sides_from_inside<2>(const std::vector<Vec2>&, long, long,
+                                               const std::vector<Vec2>&, const std::vector<Vec2>&,
+                                               double);
+template std::vector<int> sides_from_inside<3>(const std::vector<Vec3>&, long, long,
+                                               const std::vector<Vec3>&, const std::vector<Vec3>&,
+                                               double);
 
 }  // namespace pellicle

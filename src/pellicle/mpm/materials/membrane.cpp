@@ -11,13 +11,14 @@ namespace pellicle {
 
 template <int D>
 Membrane<D>::Membrane(Kinematics kinematics, double density, double youngs_modulus,
-                      double poisson_ratio, MembraneLaw law, bool one_way)
+                      double poisson_ratio, MembraneLaw law, bool one_way, bool surface_volume)
     : Material<D>(kinematics),
       density_(density),
       young_(youngs_modulus),
       poisson_(poisson_ratio),
       uniaxial_(law == MembraneLaw::uniaxial || kinematics == Kinematics::plane_stress),
-      one_way_(one_way) {}
+      one_way_(one_way),
+      surface_volume_(surface_volume) {}
 
 template <int D>
 double Membrane<D>::wave_modulus() const {
@@ -107,6 +108,18 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
     const Mat3 Q = membrane_axes(tangent[p], normal[p]);
     const Mat3 local = Q * to_mat3<D>(strain[p] + de) * Q.transpose();  // thesis eq 5.3
+    // The point stands for Δs t (2D) or ΔA t (3D) of membrane at a fixed thickness: its volume
+    // follows the stretch in the surface, not the grid's velocity gradient across it (the
+    // gas on one side and nothing on the other). The transfer divided the density by
+    // 1 + Δt tr L; take that back and divide by 1 + the in-surface dilatation instead
+    // (docs/theory/fluid-membrane.md).
+    if (surface_volume_) {
+      const Mat3 local_rate = Q * to_mat3<D>(de) * Q.transpose();
+      const double full =
+          step.velocity_gradient[p].trace() + (axisymmetric ? step.hoop_rate[p] : 0.0);
+      pts.density[p] *= (1.0 + step.dt * full) / (1.0 + local_rate(0, 0) + local_rate(1, 1));
+      pts.volume[p] = pts.mass[p] / pts.density[p];
+    }
     const double e11 = local(0, 0), e12 = local(0, 1);
     double e22 = local(1, 1), s11, s22, s12;
     local_stress(e11, e22, e12, s11, s22, s12);
@@ -156,9 +169,10 @@ std::unique_ptr<Material<D>> make_membrane(ParameterReader& in, Kinematics kinem
   if (D == 3 && law == "uniaxial")
     in.fail("law", "expected \"plane-stress\": 3D membranes are surfaces");
   const bool one_way = in.flag_or("one_way", false);
+  const bool surface = in.choice("volume", {"surface", "continuity"}, "surface") == "surface";
   return std::make_unique<Membrane<D>>(
       kinematics, rho, E, nu, law == "uniaxial" ? MembraneLaw::uniaxial : MembraneLaw::plane_stress,
-      one_way);
+      one_way, surface);
 }
 
 template class Membrane<2>;

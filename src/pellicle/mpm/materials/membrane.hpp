@@ -40,8 +40,11 @@ Mat3 membrane_axes(const Vec3& tangent, const Vec3& normal);
 template <int D>
 class Membrane final : public Material<D> {
  public:
+  //! `surface_volume`: a point's volume follows the stretch within the membrane (its length
+  //! or area × a fixed thickness); false: the velocity divergence, as every other point (the
+  //! seeds' algorithm).
   Membrane(Kinematics kinematics, double density, double youngs_modulus, double poisson_ratio,
-           MembraneLaw law, bool one_way);
+           MembraneLaw law, bool one_way, bool surface_volume = true);
 
   //! The strain and the frame (normal, tangent) its body's estimator sets each step.
   void declare_columns(Particles<D>& points) override;
@@ -74,6 +77,7 @@ class Membrane final : public Material<D> {
   Column<Vec<D>> normal_, tangent_;
   bool uniaxial_;  //!< law uniaxial, or a plane-stress law in a 2D plane-stress run
   bool one_way_;
+  bool surface_volume_;
 };
 
 template <int D>
