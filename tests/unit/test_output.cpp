@@ -131,6 +131,99 @@ TEST(Output, RunWritesCompleteFiles) {
   fs::remove_all(dir);
 }
 
+//! A DataArray of a VTK XML text: its NumberOfComponents and its values (the byte count in
+//! the UInt64 header must match them).
+template <class T>
+std::vector<T> decoded_array(const std::string& xml, const std::string& name, int& components) {
+  const auto at = xml.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "no array " << name;
+    return {};
+  }
+  const auto tag_end = xml.find('>', at);
+  const auto key = xml.find("NumberOfComponents=\"", at);
+  components = std::stoi(xml.substr(key + std::strlen("NumberOfComponents=\"")));
+  const auto end = xml.find("</DataArray>", tag_end);
+  const auto bytes = base64_decode(xml.substr(tag_end + 1, end - tag_end - 1));
+  std::uint64_t count;
+  std::memcpy(&count, bytes.data(), 8);
+  EXPECT_EQ(count + 8, bytes.size()) << name;
+  std::vector<T> values(count / sizeof(T));
+  std::memcpy(values.data(), bytes.data() + 8, count);
+  return values;
+}
+
+TEST(Output, GridSnapshotHoldsProjectedStresses) {
+  // Gas at p = (γ − 1) ρ e = 100 filling the grid; the t = 0 grid snapshot.
+  const std::string text = R"(
+[grid]
+lower = [0.0, 0.0]
+upper = [1.0, 1.0]
+cell = 0.25
+boundary = { x_min = "slip", x_max = "slip", y_min = "slip", y_max = "slip" }
+[solver]
+end_time = 0.002
+dt = 0.001
+[output]
+snapshot_interval = 0.001
+grid_snapshots = true
+[[material]]
+name = "gas"
+model = "gas"
+gamma = 1.4
+density = 1.0
+[[body]]
+name = "gas"
+material = "gas"
+internal_energy = 250.0
+region = { shape = "box", lower = [0.0, 0.0], upper = [1.0, 1.0] }
+)";
+  const fs::path dir = fs::temp_directory_path() / "pellicle_test_grid_output";
+  fs::remove_all(dir);
+  const auto source = case_source_from_text(text, "<test>");
+  Case<2> c = read_case<2>(*source);
+  c.output.directory = dir.string();
+  auto simulation = build_simulation<2>(c);
+  OutputWriter<2> output(c.output, *simulation);
+  RunControl control;
+  run_simulation(*simulation, output, nullptr, control);
+  ASSERT_TRUE(fs::exists(dir / "grid_000002.vti"));
+
+  const std::string vti = read_all(dir / "grid_000000.vti");
+  const int nx = 4 + 1 + 2 * Grid<2>::kGhost;  // nodes per axis, ghosts included
+  ASSERT_NE(vti.find("WholeExtent=\"0 8 0 8 0 0\""), std::string::npos) << vti.substr(0, 400);
+  const std::size_t nodes = nx * nx;
+  int k = 0;
+  const auto mass = decoded_array<double>(vti, "mass", k);
+  EXPECT_EQ(k, 1);
+  EXPECT_EQ(mass.size(), nodes);
+  const auto pressure = decoded_array<double>(vti, "pressure", k);
+  EXPECT_EQ(k, 1);
+  ASSERT_EQ(pressure.size(), nodes);
+  const auto stress = decoded_array<double>(vti, "stress", k);
+  EXPECT_EQ(k, 6);
+  ASSERT_EQ(stress.size(), 6 * nodes);
+  const auto membrane = decoded_array<double>(vti, "membrane_stress", k);
+  EXPECT_EQ(k, 6);
+  ASSERT_EQ(membrane.size(), 6 * nodes);
+  for (int j = Grid<2>::kGhost; j < nx - Grid<2>::kGhost; ++j)
+    for (int i = Grid<2>::kGhost; i < nx - Grid<2>::kGhost; ++i) {
+      const std::size_t n = i + nx * j;  // x fastest, as VTK orders image data
+      EXPECT_NEAR(pressure[n], 100.0, 1e-12 * 100.0) << i << ' ' << j;
+      const double expected[6] = {-100.0, -100.0, -100.0, 0.0, 0.0, 0.0};  // xx yy zz xy yz xz
+      for (int c6 = 0; c6 < 6; ++c6)
+        EXPECT_NEAR(stress[6 * n + c6], expected[c6], 1e-12 * 100.0) << i << ' ' << j;
+    }
+  for (double v : membrane) EXPECT_EQ(v, 0.0);
+
+  // Particle snapshots flag the fluid points.
+  const auto fluid = decoded_array<std::uint8_t>(read_all(dir / "points_000000.vtu"), "fluid", k);
+  EXPECT_EQ(k, 1);
+  EXPECT_EQ(static_cast<long>(fluid.size()), simulation->points().size());
+  for (auto f : fluid) EXPECT_EQ(f, 1);
+  fs::remove_all(dir);
+}
+
 TEST(Output, CaseHashIsStable) {
   EXPECT_EQ(hash_text(""), "cbf29ce484222325");  // FNV-1a offset basis
   EXPECT_NE(hash_text("a"), hash_text("b"));

@@ -126,7 +126,8 @@ void OutputWriter<D>::write_snapshot(const Simulation<D>& simulation) {
   points_series_.add(simulation.time(), name);
   if (settings_.grid_snapshots) {
     std::snprintf(name, sizeof name, "grid_%06d.vti", snapshots_);
-    write_grid_vti<D>(settings_.directory + "/" + name, simulation.grid());
+    write_grid_vti<D>(settings_.directory + "/" + name, simulation.grid(),
+                      projection_.project(simulation));
     grid_series_.add(simulation.time(), name);
   }
   ++snapshots_;

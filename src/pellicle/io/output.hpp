@@ -3,7 +3,8 @@
 //!   history.csv   time series of energies, momentum and per-body centre of mass/velocity,
 //!                 flushed at every row
 //!   points.pvd    ParaView series of particle snapshots points_NNNNNN.vtu
-//!   grid.pvd      (optional) series of grid snapshots grid_NNNNNN.vti
+//!   grid.pvd      (optional) series of grid snapshots grid_NNNNNN.vti, with the point
+//!                 stresses projected onto the nodes when each is written
 //!   summary.json  final values, version, case hash, wall time, throughput, status
 
 #include <chrono>
@@ -14,6 +15,7 @@
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/probes.hpp"
 #include "pellicle/io/vtk_writer.hpp"
+#include "pellicle/mpm/grid_projection.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
@@ -42,6 +44,7 @@ class OutputWriter final : public StepObserver<D> {
   std::vector<Probe<D>> probes_;
   std::ofstream history_;
   PvdCollection points_series_, grid_series_;
+  GridProjection<D> projection_;  //!< used only for grid snapshots
   double next_history_ = 0.0, next_snapshot_ = 0.0;
   long last_history_step_ = -1, last_snapshot_step_ = -1;
   int snapshots_ = 0;

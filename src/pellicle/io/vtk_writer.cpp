@@ -100,6 +100,10 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
     offsets[i] = static_cast<std::int32_t>(i + 1);
   }
   std::vector<std::int32_t> body(p.body.begin(), p.body.end());
+  std::vector<std::uint8_t> fluid(n, 0);
+  for (const auto& b : p.bodies)
+    if (simulation.material(b.material).is_fluid())
+      std::fill(fluid.begin() + b.begin, fluid.begin() + b.end, std::uint8_t{1});
 
   std::string out;
   out.reserve(n * 200 + 4096);
@@ -122,6 +126,7 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
   data_array(out, "Float64", "pressure", 1, pressure);
   data_array(out, "Float64", "von_mises", 1, von_mises);
   data_array(out, "Int32", "body", 1, body);
+  data_array(out, "UInt8", "fluid", 1, fluid);
   write_declared_columns(out, p);
   write_material_fields(out, simulation);
   out += "</PointData>\n<Cells>\n";
@@ -133,7 +138,7 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
 }
 
 template <int D>
-void write_grid_vti(const std::string& path, const Grid<D>& grid) {
+void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses) {
   const IVec<D> n = grid.nodes();
   const Vec<D> origin = grid.node_position(IVec<D>::Zero());
   std::ostringstream head;
@@ -150,6 +155,9 @@ void write_grid_vti(const std::string& path, const Grid<D>& grid) {
   std::string out = head.str();
   data_array(out, "Float64", "mass", 1, grid.mass);
   data_array(out, "Float64", "velocity", 3, as_xyz<D>(grid.velocity));
+  data_array(out, "Float64", "pressure", 1, stresses.pressure);
+  data_array(out, "Float64", "stress", 6, as_paraview_tensor<D>(stresses.stress));
+  data_array(out, "Float64", "membrane_stress", 6, as_paraview_tensor<D>(stresses.membrane_stress));
   out += "</PointData>\n<CellData>\n</CellData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
   write_file_atomically(path, out);
 }
@@ -168,7 +176,7 @@ void PvdCollection::add(double time, const std::string& file) {
 
 template void write_points_vtu<2>(const std::string&, const Simulation<2>&);
 template void write_points_vtu<3>(const std::string&, const Simulation<3>&);
-template void write_grid_vti<2>(const std::string&, const Grid<2>&);
-template void write_grid_vti<3>(const std::string&, const Grid<3>&);
+template void write_grid_vti<2>(const std::string&, const Grid<2>&, const NodeStresses<2>&);
+template void write_grid_vti<3>(const std::string&, const Grid<3>&, const NodeStresses<3>&);
 
 }  // namespace pellicle

@@ -6,18 +6,22 @@
 #include <vector>
 
 #include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/grid_projection.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
 
 //! Particle snapshot: positions and velocity, mass, volume, density, stress, strain,
-//! pressure, von Mises stress and body id per point. Written atomically.
+//! pressure, von Mises stress, body id and whether the point is a fluid's, per point.
+//! Written atomically.
 template <int D>
 void write_points_vtu(const std::string& path, const Simulation<D>& simulation);
 
-//! Grid snapshot: nodal mass and velocity on the node lattice (ghost layers included).
+//! Grid snapshot on the node lattice (ghost layers included): nodal mass and velocity, and
+//! the point stresses projected onto the nodes (grid_projection.hpp): `pressure`, `stress`
+//! and `membrane_stress`, tensors as ParaView's 6-component symmetric tensors.
 template <int D>
-void write_grid_vti(const std::string& path, const Grid<D>& grid);
+void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses);
 
 //! A time series of files for ParaView.
 class PvdCollection {

@@ -112,6 +112,7 @@ class Simulation final : private Stages {
   const Particles<D>& points() const { return points_; }
   Particles<D>& points() { return points_; }
   Transfer<D>& transfer() { return *transfer_; }
+  const Transfer<D>& transfer() const { return *transfer_; }
   const Material<D>& material(int index) const { return *materials_[index]; }
   int material_count() const { return static_cast<int>(materials_.size()); }
   const Vec<D>& gravity() const { return gravity_; }

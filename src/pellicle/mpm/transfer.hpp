@@ -78,6 +78,15 @@ class Transfer {
   virtual double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
                            PointFailure& failure, PointRange range = {}) = 0;
 
+  //! Nodes per point stencil: the kernel's width to the power D.
+  virtual int stencil_size() const = 0;
+  //! Node ids and weights N_i(x_p) of points [begin, end) at their current positions,
+  //! stencil_size() of each per point, point `begin` first. Computed afresh, not taken from
+  //! the step's stencils (those hold the positions at the start of the step), and touching
+  //! no state, so threads may call it on disjoint ranges. For output (grid_projection.hpp).
+  virtual void node_weights(const Particles<D>& points, const Grid<D>& grid, long begin, long end,
+                            long* nodes, double* weights) const = 0;
+
   //! Grid nodes the points [begin, end) touch (N_i > 0), each listed once, appended to `nodes`.
   virtual void touched_nodes(const Grid<D>& grid, long begin, long end,
                              std::vector<long>& nodes) const = 0;

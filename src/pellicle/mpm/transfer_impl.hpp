@@ -138,6 +138,22 @@ class TransferImpl final : public Transfer<D> {
     return max_speed;
   }
 
+  int stencil_size() const override {
+    return Stencil<D, Kernel>::size;
+  }
+
+  void node_weights(const Particles<D>& points, const Grid<D>& grid, long begin, long end,
+                    long* nodes, double* weights) const override {
+    for (long p = begin; p < end; ++p) {
+      Stencil<D, Kernel> s;
+      compute_stencil(kernel_, grid, points.position[p], s);
+      for_each_node(s, grid.strides(), [&](long node, double N, const Vec<D>&, const IVec<D>&) {
+        *nodes++ = node;
+        *weights++ = N;
+      });
+    }
+  }
+
   void touched_nodes(const Grid<D>& grid, long begin, long end,
                      std::vector<long>& nodes) const override {
     const std::size_t first = nodes.size();
