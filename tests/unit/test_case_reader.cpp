@@ -280,8 +280,10 @@ TEST(CaseReader, ProbesNameRealBodiesAndPoints) {
             std::string::npos)
       << msg;
   msg = problems_of(kString + "[[probe]]\nname = \"p\"\nbody = \"wire\"\nquantity = \"speed\"\n");
-  EXPECT_NE(msg.find("probe[0].quantity: expected one of \"position\", \"velocity\" or \"angle\""),
-            std::string::npos)
+  EXPECT_NE(
+      msg.find(
+          "probe[0].quantity: expected one of \"position\", \"velocity\", \"angle\" or \"radius\""),
+      std::string::npos)
       << msg;
 }
 

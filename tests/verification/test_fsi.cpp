@@ -99,15 +99,61 @@ TEST(FsiQuarterCircle, HoopTensionBalancesPressureAndNormalMethodsAgree) {
   EXPECT_LT(largest, 0.05);
 }
 
-TEST(FsiQuarterCircle, InsideMustNameAMembraneThatEncloses) {
+std::string case_text() {
   std::ifstream file(PELLICLE_CASES_DIR "/fsi_quarter_circle.toml");
   std::stringstream text;
   text << file.rdbuf();
-  EXPECT_EQ(testing::problems_of(text.str()), "");
-  const std::string unknown = testing::problems_of(text.str(), {"body[1].region.inside=air"});
+  return text.str();
+}
+
+// A tether across the inside (the thesis's pre-inflation, §6.3): a string whose ends lie
+// at the membrane, taut while the gas pushes the membrane out, and cut at t = 0.01.
+TEST(FsiQuarterCircle, TetherHoldsUntilCutAndAMassSetsTheDensity) {
+  const std::string tether = case_text() + R"(
+[[body]]
+name = "tether"
+material = "skin"
+membrane = { shape = "polyline", vertices = [[0.49, 0.1], [0.1, 0.49]], points = 40, thickness = 0.02 }
+cut_at = 0.01
+
+[[probe]]
+name = "r45"
+body = "skin"
+quantity = "radius"
+point = 45
+)";
+  auto s = testing::simulation_from_text<2>(tether, {"body[1].total_mass=0.2"});
+  const auto& p = s->points();
+  const auto& gas = p.bodies[1];
+  const auto& cord = p.bodies[2];
+  double gas_mass = 0.0;
+  for (long i = gas.begin; i < gas.end; ++i) gas_mass += p.mass[i];
+  EXPECT_NEAR(gas_mass, 0.2, 1e-12);
+  auto cord_tension = [&] {
+    double largest = 0.0;
+    for (long i = cord.begin; i < cord.end; ++i)
+      largest = std::max(largest, std::abs(p.stress[i].maxCoeff()));
+    return largest;
+  };
+  double before = 0.0;
+  while (s->time() < 0.0099) {
+    s->step();
+    before = std::max(before, cord_tension());
+  }
+  EXPECT_GT(before, 100.0);  // the gas pushed the ends apart: the tether pulled
+  s->run(s->step_count() + 20);
+  EXPECT_GT(s->time(), 0.01);
+  EXPECT_EQ(cord_tension(), 0.0);
+  EXPECT_EQ(s->enclosed().at(0).filler, 1);
+}
+
+TEST(FsiQuarterCircle, InsideMustNameAMembraneThatEncloses) {
+  const std::string text = case_text();
+  EXPECT_EQ(testing::problems_of(text), "");
+  const std::string unknown = testing::problems_of(text, {"body[1].region.inside=air"});
   EXPECT_NE(unknown.find("no membrane body named 'air'"), std::string::npos) << unknown;
   // An arc that stops short of the y axis leaves the quarter open.
-  const std::string open = testing::problems_of(text.str(), {"body[0].membrane.end_angle=80"});
+  const std::string open = testing::problems_of(text, {"body[0].membrane.end_angle=80"});
   EXPECT_NE(open.find("cannot fill membrane 'skin': the membrane is open at"), std::string::npos)
       << open;
   EXPECT_NE(open.find("body.region.inside"), std::string::npos) << open;

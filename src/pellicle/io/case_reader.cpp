@@ -372,6 +372,14 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
       }
     }
     if (t->has("density")) b.density = t->number("density", NumberRange::positive());
+    if (t->has("total_mass")) {
+      if (t->has("density")) t->fail("total_mass", "give either density or total_mass, not both");
+      b.total_mass = t->number("total_mass", NumberRange::positive());
+    }
+    if (t->has("cut_at")) {
+      b.cut_at = t->number("cut_at", NumberRange::non_negative());
+      if (!b.membrane) t->fail("cut_at", "only membrane bodies (strings, tethers) can be cut");
+    }
     if (t->has("internal_energy")) {
       b.internal_energy = t->number("internal_energy", NumberRange::non_negative());
       const bool fluid = b.material < static_cast<int>(c.materials.size()) &&
@@ -413,7 +421,7 @@ void read_probes(TomlParameters& root, Case<D>& c) {
     if (std::none_of(c.bodies.begin(), c.bodies.end(),
                      [&](const auto& b) { return b.name == p.body; }))
       t->fail("body", "expected the name of a [[body]], found \"" + p.body + "\"");
-    const std::string q = t->choice("quantity", {"position", "velocity", "angle"});
+    const std::string q = t->choice("quantity", {"position", "velocity", "angle", "radius"});
     auto index = [&](double v, const char* key) {
       if (v < 0 || v != std::floor(v)) t->fail(key, "expected whole point indices >= 0");
       return static_cast<long>(std::max(0.0, v));
@@ -427,6 +435,10 @@ void read_probes(TomlParameters& root, Case<D>& c) {
       down[D - 1] = -1.0;
       p.reference = read_vector_or<D>(*t, "reference", down);
       if (p.reference.norm() == 0.0) t->fail("reference", "expected a non-zero vector");
+    } else if (q == "radius") {
+      p.quantity = ProbeQuantity::radius;
+      p.a = p.b = index(t->number("point", NumberRange::non_negative()), "point");
+      p.reference = read_vector_or<D>(*t, "center", Vec<D>::Zero());
     } else if (!q.empty()) {
       p.quantity = q == "position" ? ProbeQuantity::position : ProbeQuantity::velocity;
       p.a = p.b = index(t->number("point", NumberRange::non_negative()), "point");

@@ -25,7 +25,8 @@ Probe<D>::Probe(const ProbeSpec<D>& spec, const Simulation<D>& simulation) : spe
 
 template <int D>
 std::vector<std::string> Probe<D>::columns() const {
-  if (spec_.quantity == ProbeQuantity::angle) return {spec_.name};
+  if (spec_.quantity == ProbeQuantity::angle || spec_.quantity == ProbeQuantity::radius)
+    return {spec_.name};
   std::vector<std::string> out;
   for (int d = 0; d < D; ++d) out.push_back(spec_.name + "." + "xyz"[d]);
   return out;
@@ -45,6 +46,7 @@ std::vector<double> Probe<D>::values(const Simulation<D>& s) const {
     }
     return {angle * 180.0 / std::numbers::pi};
   }
+  if (spec_.quantity == ProbeQuantity::radius) return {(p.position[a_] - spec_.reference).norm()};
   const Vec<D>& v = spec_.quantity == ProbeQuantity::position ? p.position[a_] : p.velocity[a_];
   return std::vector<double>(v.data(), v.data() + D);
 }

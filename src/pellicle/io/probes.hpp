@@ -6,10 +6,12 @@
 //!   body      string, required: the body the points belong to
 //!   quantity  "position" | "velocity" (of `point`; columns <name>.x, <name>.y[, <name>.z])
 //!             | "angle" (of the line from points[0] to points[1]; column <name>, degrees)
+//!             | "radius" (distance of `point` from `center`; column <name>)
 //!   point     index within the body (position, velocity)
 //!   points    [a, b], indices within the body (angle)
 //!   reference direction the angle is measured from; default [0, −1] (2D: "hanging down",
 //!             positive counter-clockwise) or [0, 0, −1] (3D: unsigned)
+//!   center    the point radii are measured from; default the origin
 
 #include <string>
 #include <vector>
@@ -20,14 +22,14 @@
 
 namespace pellicle {
 
-enum class ProbeQuantity { position, velocity, angle };
+enum class ProbeQuantity { position, velocity, angle, radius };
 
 template <int D>
 struct ProbeSpec {
   std::string name, body;
   ProbeQuantity quantity = ProbeQuantity::position;
-  long a = 0, b = 0;  //!< indices within the body (b only for angles)
-  Vec<D> reference = Vec<D>::Zero();
+  long a = 0, b = 0;                  //!< indices within the body (b only for angles)
+  Vec<D> reference = Vec<D>::Zero();  //!< angle: the direction; radius: the centre
   SourceLocation where;
 };
 

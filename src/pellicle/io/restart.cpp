@@ -30,6 +30,40 @@ bool restart_safe(const std::string& table, const std::string& key) {
   return false;
 }
 
+//! Keys of a kept body that a restart may change: what acts on it from now on, not the
+//! state it starts from (that comes from the checkpoint).
+bool body_key_may_change(const std::string& key) {
+  return key == "cut_at" || key == "external_force";
+}
+bool membrane_key_may_change(const std::string& key) {
+  return key == "frames" || key == "orientation";
+}
+
+//! Two [[body]] tables alike but for the keys a restart may change.
+bool same_body(const toml::table& a, const toml::table& b) {
+  std::set<std::string> keys;
+  for (const auto& [k, v] : a) keys.insert(std::string(k.str()));
+  for (const auto& [k, v] : b) keys.insert(std::string(k.str()));
+  for (const auto& key : keys) {
+    if (body_key_may_change(key)) continue;
+    const auto *x = a.get(key), *y = b.get(key);
+    if (key == "membrane" && x && y && x->is_table() && y->is_table()) {
+      toml::table u = *x->as_table(), v = *y->as_table();
+      for (toml::table* t : {&u, &v})
+        for (const char* k : {"frames", "orientation"}) t->erase(k);
+      if (!same(&u, &v)) return false;
+      continue;
+    }
+    if (!same(x, y)) return false;
+  }
+  return true;
+}
+
+//! A kept [[material]] may take new parameters of the same model.
+bool same_model(const toml::table& a, const toml::table& b) {
+  return same(a.get("model"), b.get("model"));
+}
+
 class Comparison {
  public:
   Comparison(const CaseSource& now, std::string checkpoint)
@@ -76,11 +110,15 @@ class Comparison {
         if (!o || !o->get("name") || o->get("name")->value_or(std::string()) != id) continue;
         kept.insert(id);
         if (same(o, t)) break;
-        if (name == "material" && !used.count(id)) break;  // no kept body uses it
+        if (name == "material" && (!used.count(id) || same_model(*o, *t))) break;
+        if (name == "body" && same_body(*o, *t)) break;
         refuse(t, now, name + " '" + id + "'",
-               "a " + name +
-                   " carried over from the checkpoint must be unchanged; give the "
-                   "changed one a new name to start it afresh");
+               name == "material"
+                   ? "a material carried over from the checkpoint may change its parameters "
+                     "but not its model; give the changed one a new name to start it afresh"
+                   : "a body carried over from the checkpoint may change only cut_at, "
+                     "external_force and its membrane's frames and orientation; give the "
+                     "changed one a new name to start it afresh");
         break;
       }
     }

@@ -7,8 +7,11 @@
 //!   [[body]] tables added or removed                           new bodies start from their
 //!                                                              case state; removed ones go
 //!   [[material]] tables added or removed                       (those no kept body uses)
-//! A body kept by name must be unchanged, as must the materials it uses and every other key;
-//! anything else is refused with the key and its place in the new case.
+//!   a kept [[body]]'s cut_at, external_force,                what acts on it from now on
+//!   membrane.frames and membrane.orientation
+//!   a kept [[material]]'s parameters (not its model)         e.g. a gas made inviscid
+//! A body kept by name is otherwise unchanged (its state comes from the checkpoint), as is
+//! every other key; anything else is refused with the key and its place in the new case.
 
 #include <memory>
 #include <string>

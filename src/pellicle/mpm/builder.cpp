@@ -229,9 +229,15 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     }
     points.bodies.push_back(
         {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frames});
-    const double density = b.density.value_or(material.density());
+    double density = b.density.value_or(material.density());
+    if (b.total_mass) {
+      double volume = 0.0;
+      for (const auto& entry : positions) volume += entry.second;
+      density = *b.total_mass / volume;
+    }
     for (const auto& [x, volume] : positions) points.add(x, b.velocity, density * volume, density);
     auto& body = points.bodies.back();
+    body.cut_at = b.cut_at;
     InitialState<D> state;
     state.internal_energy = b.internal_energy;
     material.initialise(points, body.begin, body.end, state);

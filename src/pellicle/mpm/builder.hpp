@@ -10,6 +10,7 @@
 //!   b.body(disk);
 //!   auto simulation = b.build();
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,7 +57,12 @@ struct BodySetup {
   std::vector<std::pair<long, double>> point_masses;      //!< (index in body, mass) overrides
   std::vector<std::pair<long, Vec<D>>> point_velocities;  //!< (index in body, velocity) overrides
   std::optional<double> density;  //!< overrides the material's reference density
-  double internal_energy = 0.0;   //!< fluids: initial specific internal energy e
+  //! Instead of a density: the body's total mass (the density follows from its volume, as
+  //! the thesis sets its probes' density from their mass, §6.3).
+  std::optional<double> total_mass;
+  //! From this time on the body carries no stress (a tether cut, thesis §6.3).
+  double cut_at = std::numeric_limits<double>::infinity();
+  double internal_energy = 0.0;  //!< fluids: initial specific internal energy e
 };
 
 //! A problem with one body (body ≥ 0) or with the whole set-up (body = −1).

@@ -4,6 +4,7 @@
 //! common columns below; a quantity only some models need (strain, frames, internal energy,
 //! the APIC affine velocity, plastic strain) is a column its model declares (PointColumns).
 
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -25,6 +26,9 @@ struct BodyInfo {
   long begin = 0, end = 0;                       //!< point range
   //! Membrane bodies: how their points' frames are estimated; null for solids.
   std::shared_ptr<FrameEstimator<D>> frames;
+  //! From this time on the body carries no stress (a tether cut, thesis §6.3); its points
+  //! keep their mass and move with the grid.
+  double cut_at = std::numeric_limits<double>::infinity();
   long count() const { return end - begin; }
 };
 

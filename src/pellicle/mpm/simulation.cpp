@@ -200,6 +200,11 @@ void Simulation<D>::materials(double dt) {
                            cell_density_ranges_, points_);
   update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
   for (const auto& body : points_.bodies) {
+    if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
+      std::fill(points_.stress.begin() + body.begin, points_.stress.begin() + body.end,
+                Sym<D>::Zero());
+      continue;
+    }
     const auto& material = *materials_[body.material];
     material.update(
         {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid().cell()});
