@@ -42,6 +42,8 @@ const std::vector<Problem>& problems() {
       {"piston-container",
        "Piston on a spring over a liquid column: period (two masses, two liquids)",
        "thesis §6.1, deck A.4.10", &piston_container},
+      {"dogbone", "Gas-filled dog-bone membrane expands to a circle: Tables 5-6, four grids",
+       "thesis §6.2, Tables 4-6, deck A.4.7", &dogbone},
       {"friction-block", "Block sliding on an incline: Coulomb friction, μ = 0, 0.3, 0.7",
        "Bardenhagen, Brackbill & Sulsky 2000; analytic", &friction_block},
       {"surface-movement",
