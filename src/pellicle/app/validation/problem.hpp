@@ -68,6 +68,7 @@ Outcome disks_wire(Resolution resolution);
 Outcome offset_disks(Resolution resolution);
 Outcome ball_and_net(Resolution resolution);
 Outcome dogbone(Resolution resolution);
+Outcome airbag(Resolution resolution);
 Outcome surface_cdr_sphere(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
 Outcome surface_half_pipe(Resolution resolution);

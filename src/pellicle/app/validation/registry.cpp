@@ -44,6 +44,8 @@ const std::vector<Problem>& problems() {
        "thesis §6.1, deck A.4.10", &piston_container},
       {"dogbone", "Gas-filled dog-bone membrane expands to a circle: Tables 5-6, four grids",
        "thesis §6.2, Tables 4-6, deck A.4.7", &dogbone},
+      {"airbag", "Airbag impact: bag inflated with a tether, then Cyl-200 and Cyl-500 probes",
+       "thesis §6.3, Tables 7-8, decks A.4.8-A.4.9", &airbag},
       {"friction-block", "Block sliding on an incline: Coulomb friction, μ = 0, 0.3, 0.7",
        "Bardenhagen, Brackbill & Sulsky 2000; analytic", &friction_block},
       {"surface-movement",
