@@ -117,6 +117,21 @@ def plot_bodies(history, path, out):
     plt.close(fig)
 
 
+def plot_columns(history, path, names, out):
+    """Each named column against time, one panel each."""
+    time = column(history, "time", path)
+    fig, axes = plt.subplots(len(names), 1, sharex=True, figsize=(8, 2.6 * len(names)),
+                             squeeze=False)
+    for ax, name in zip(axes[:, 0], names):
+        ax.plot(time, column(history, name, path))
+        ax.set_ylabel(name)
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("time")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+
+
 def main():
     parser = argparse.ArgumentParser(
         description="Plot energies and body centre-of-mass histories from history.csv.")
@@ -125,6 +140,9 @@ def main():
     parser.add_argument("--out", metavar="PNG_PREFIX",
                         help="prefix of the output files: writes PREFIXenergy.png and "
                              "PREFIXbodies.png (default: the CSV's directory + '/')")
+    parser.add_argument("--columns", metavar="NAME[,NAME...]",
+                        help="also write PREFIXcolumns.png: these history columns against "
+                             "time, one panel each (e.g. probe positions, gas.pressure)")
     args = parser.parse_args()
 
     path = args.input
@@ -136,6 +154,9 @@ def main():
         history = read_history(path)
         plot_energy(history, path, outputs[0])
         plot_bodies(history, path, outputs[1])
+        if args.columns:
+            outputs += (prefix + "columns.png",)
+            plot_columns(history, path, args.columns.split(","), outputs[2])
     except InputError as err:
         parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
     except OSError as err:

@@ -73,7 +73,7 @@ Case<D> read_case(const CaseSource& source);
 //! The case text (for hashing into summary.json).
 const std::string& case_text(const CaseSource& source);
 
-//! The built-in default case: the two elastic disks of Sulsky, Chen and Schreyer (1994).
+//! The built-in default case: the airbag demo (cases/airbag_demo.toml).
 const std::string& default_case_text();
 
 }  // namespace pellicle
