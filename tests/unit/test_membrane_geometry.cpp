@@ -9,6 +9,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <numbers>
 
 #include "pellicle/core/error.hpp"
@@ -73,6 +74,55 @@ TEST(SurfaceMeshes, AreasOfTheGeneratedShapes) {
   SurfaceMesh sphere = make_ellipsoid(Vec3::Zero(), Vec3::Constant(2.0), 0.2);
   EXPECT_LE(longest_edge(sphere), 0.2 + 1e-12);
   for (const auto& v : sphere.vertices) EXPECT_NEAR(v.norm(), 2.0, 1e-12);
+}
+
+TEST(SurfaceMeshes, PartsOfAnEllipsoidEndOnTheirCuttingPlanes) {
+  auto area = [](const SurfaceMesh& m) {
+    double a = 0.0;
+    for (double v : vertex_areas(m)) a += v;
+    return a;
+  };
+  // An eighth of a sphere of radius 0.5 about the origin.
+  const SurfaceMesh eighth =
+      make_ellipsoid_part(Vec3::Zero(), Vec3::Constant(0.5), 0.025, {1, 1, 1});
+  EXPECT_LE(longest_edge(eighth), 0.025 + 1e-12);
+  EXPECT_NEAR(area(eighth), pi * 0.25 / 2, 0.005 * pi * 0.25 / 2);
+  // Every edge used by one triangle lies in one of the three planes, and every vertex is on
+  // the sphere in the kept octant.
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& t : eighth.triangles)
+    for (int e = 0; e < 3; ++e) ++uses[std::minmax(t[e], t[(e + 1) % 3])];
+  int boundary = 0;
+  for (const auto& [edge, count] : uses) {
+    if (count != 1) continue;
+    ++boundary;
+    const Vec3 &a = eighth.vertices[edge.first], &b = eighth.vertices[edge.second];
+    bool on_a_plane = false;
+    for (int d = 0; d < 3; ++d) on_a_plane = on_a_plane || (a[d] == 0.0 && b[d] == 0.0);
+    EXPECT_TRUE(on_a_plane) << a.transpose() << " – " << b.transpose();
+  }
+  EXPECT_GT(boundary, 3 * 30);  // three quarter circles of length π/4 at spacing ≤ 0.025
+  for (const auto& v : eighth.vertices) {
+    EXPECT_NEAR(v.norm(), 0.5, 1e-12);
+    EXPECT_GE(v.minCoeff(), 0.0);
+  }
+  // Normals face out: the signed volume (1/3) Σ x·n dA of the closed eighth is +π R³ / 6.
+  double volume = 0.0;
+  for (const auto& t : eighth.triangles)
+    volume += eighth.vertices[t[0]].dot(eighth.vertices[t[1]].cross(eighth.vertices[t[2]])) / 6;
+  EXPECT_NEAR(volume, pi * 0.125 / 6, 0.01 * pi * 0.125 / 6);
+  // A quarter of an oblate spheroid (x ≥ 0, y ≤ 0), as an airbag's quarter model.
+  const Vec3 axes(0.29, 0.29, 0.1575);
+  const SurfaceMesh quarter = make_ellipsoid_part(Vec3(0, 0, 1), axes, 0.01, {1, -1, 0});
+  const double e = std::sqrt(1 - axes.z() * axes.z() / (axes.x() * axes.x()));
+  const double full =
+      2 * pi * axes.x() * axes.x() + pi * axes.z() * axes.z() / e * std::log((1 + e) / (1 - e));
+  EXPECT_NEAR(area(quarter), full / 4, 0.005 * full / 4);
+  for (const auto& v : quarter.vertices) {
+    EXPECT_GE(v.x(), 0.0);
+    EXPECT_LE(v.y(), 0.0);
+    EXPECT_NEAR((v - Vec3(0, 0, 1)).cwiseQuotient(axes).norm(), 1.0, 1e-12);
+  }
 }
 
 class MeshFiles : public ::testing::Test {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <sstream>
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/geometry/curve.hpp"
@@ -75,6 +76,33 @@ MembraneGeometry<2> curve(ParameterReader& in, double cell) {
                                        std::min(to, from + 360.0) * kDegree, sampling));
 }
 
+//! `keep = [[1, 0, 0], [0, -1, 0], …]`: the sides of the coordinate planes through the centre
+//! to keep (n·(x − c) ≥ 0 for each n, as for surface shapes), so a quarter or eighth of a bag
+//! has its boundary edges on symmetry faces. Only ± coordinate axes are offered.
+std::array<int, 3> kept_sides(ParameterReader& in) {
+  std::array<int, 3> side{0, 0, 0};
+  for (const auto& n : in.number_lists("keep", 3)) {
+    int axis = -1, nonzero = 0;
+    for (int d = 0; d < 3; ++d)
+      if (n[d] != 0.0) axis = d, ++nonzero;
+    if (nonzero != 1) {
+      std::ostringstream found;
+      found << "[" << n[0] << ", " << n[1] << ", " << n[2] << "]";
+      in.fail("keep", "expected coordinate directions such as [1, 0, 0] or [0, -1, 0], found " +
+                          found.str());
+      continue;
+    }
+    const int sign = n[axis] > 0 ? 1 : -1;
+    if (side[axis] == -sign) {
+      const std::string axis_name(1, "xyz"[axis]);
+      in.fail("keep", "expected one side of the plane " + axis_name + " = center." + axis_name +
+                          ", found both (nothing is kept)");
+    }
+    side[axis] = sign;
+  }
+  return side;
+}
+
 MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string& base) {
   const std::string shape =
       in.choice("shape", {"rectangle", "disk", "sphere", "ellipsoid", "cylinder", "torus", "mesh"});
@@ -100,7 +128,8 @@ MembraneGeometry<3> surface(ParameterReader& in, double cell, const std::string&
     const Vec3 c = read_vector<3>(in, "center");
     const Vec3 a = shape == "sphere" ? Vec3::Constant(in.number("radius", positive))
                                      : read_vector<3>(in, "semi_axes", positive);
-    return from_mesh(make_ellipsoid(c, a, ds));
+    if (!in.has("keep")) return from_mesh(make_ellipsoid(c, a, ds));
+    return from_mesh(make_ellipsoid_part(c, a, ds, kept_sides(in)));
   }
   if (shape == "cylinder" || shape == "torus") {
     const Vec3 c = read_vector<3>(in, "center"), axis = read_vector<3>(in, "axis");

@@ -10,8 +10,9 @@
 //!       spacing (default: a quarter cell) or points (exact count)
 //!   3D  shape = "rectangle" corner, edge_u, edge_v        (normal edge_u × edge_v)
 //!       shape = "disk"      center, normal, radius
-//!       shape = "sphere"    center, radius
-//!       shape = "ellipsoid" center, semi_axes
+//!       shape = "sphere"    center, radius, keep = [[1, 0, 0], …] (optional)
+//!       shape = "ellipsoid" center, semi_axes, keep (optional): the sides of the coordinate
+//!                           planes through the centre to keep (a half, quarter or eighth)
 //!       shape = "cylinder"  center, axis, radius, height   (open tube)
 //!       shape = "torus"     center, axis, major_radius, minor_radius
 //!       shape = "mesh"      file (STL or OBJ, relative to the case file), scale = 1,

@@ -165,6 +165,30 @@ SurfaceMesh make_ellipsoid(const Vec3& center, const Vec3& semi_axes, double spa
   return m;
 }
 
+SurfaceMesh make_ellipsoid_part(const Vec3& center, const Vec3& semi_axes, double spacing,
+                                const std::array<int, 3>& side) {
+  // Each face of the octahedron ±e_x, ±e_y, ±e_z covers one octant, and the midpoints of an
+  // edge in a coordinate plane stay in it when projected onto the sphere.
+  SurfaceMesh m;
+  m.vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (int sx : {1, -1})
+    for (int sy : {1, -1})
+      for (int sz : {1, -1}) {
+        if (sx * side[0] < 0 || sy * side[1] < 0 || sz * side[2] < 0) continue;
+        const int a = sx > 0 ? 0 : 1, b = sy > 0 ? 2 : 3, c = sz > 0 ? 4 : 5;
+        // (e_x, e_y, e_z) is counter-clockwise seen from outside; each sign flip mirrors it.
+        if (sx * sy * sz > 0)
+          m.triangles.push_back({a, b, c});
+        else
+          m.triangles.push_back({a, c, b});
+      }
+  drop_unused_vertices(m);
+  const double stretch = semi_axes.maxCoeff();
+  refine(m, spacing / stretch, [](const Vec3& x) { return Vec3(x.normalized()); });
+  for (auto& v : m.vertices) v = center + v.cwiseProduct(semi_axes);
+  return m;
+}
+
 SurfaceMesh make_cylinder(const Vec3& center, const Vec3& axis, double radius, double height,
                           double spacing) {
   const auto [a, b] = basis_around(axis);

@@ -33,6 +33,12 @@ SurfaceMesh make_rectangle_patch(const Vec3& corner, const Vec3& u, const Vec3& 
 SurfaceMesh make_disk(const Vec3& center, const Vec3& axis, double radius, double spacing);
 //! Outward normals.
 SurfaceMesh make_ellipsoid(const Vec3& center, const Vec3& semi_axes, double spacing);
+//! The part of an ellipsoid on chosen sides of the coordinate planes through its centre:
+//! `side[d]` = +1 keeps x_d ≥ center_d, −1 keeps x_d ≤ center_d, 0 both (an eighth for three
+//! non-zero sides). An octahedron refined on the unit sphere, then stretched, so the boundary
+//! edges lie exactly in the cutting planes. Outward normals.
+SurfaceMesh make_ellipsoid_part(const Vec3& center, const Vec3& semi_axes, double spacing,
+                                const std::array<int, 3>& side);
 //! Open tube of the given height centred on `center`, along `axis`; outward normals.
 SurfaceMesh make_cylinder(const Vec3& center, const Vec3& axis, double radius, double height,
                           double spacing);
