@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "pellicle/io/build.hpp"
+#include "pellicle/io/builtin_cases.hpp"
 #include "pellicle/io/case.hpp"
 
 namespace pellicle {
@@ -25,7 +26,8 @@ std::unique_ptr<Simulation<2>> make_bench_two_disks(long points, const std::stri
                                      "body[0].points_per_cell=2",
                                      "body[1].points_per_cell=2"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto source = load_case_source("", overrides);
+  const auto source =
+      case_source_from_text(builtin_case("two_disks.toml"), "two_disks.toml", overrides);
   Case<2> c = read_case<2>(*source);
   return build_simulation<2>(c);
 }
@@ -65,6 +67,24 @@ region = { shape = "box", lower = [0.0, 0.0], upper = [1.0, 1.0] }
   const auto source = case_source_from_text(
       text, "<gas benchmark>",
       {cell, dt, "solver.kernel=" + kernel, "solver.velocity_update=" + velocity_update});
+  Case<2> c = read_case<2>(*source);
+  return build_simulation<2>(c);
+}
+
+std::unique_ptr<Simulation<2>> make_bench_gas_membrane(long points) {
+  // The quarter disk of radius 0.5 holds π/16 of the unit square, 16 gas points per cell:
+  // points ≈ π cells².
+  const long cells =
+      std::max(10L, std::lround(std::sqrt(std::max(points, 100L) / std::numbers::pi)));
+  const double h = 1.0 / cells;
+  char cell[64], dt[64], spacing[96];
+  std::snprintf(cell, sizeof cell, "grid.cell=%.17g", h);
+  std::snprintf(dt, sizeof dt, "solver.dt=%.17g", 0.7e-4 * h / 0.1);
+  std::snprintf(spacing, sizeof spacing, "body[0].membrane.points=%ld",
+                std::lround(std::numbers::pi / 4.0 / (0.25 * h)) + 1);
+  const auto source =
+      case_source_from_text(builtin_case("fsi_quarter_circle.toml"), "<gas-membrane benchmark>",
+                            {cell, dt, spacing, "solver.end_time=1000"});
   Case<2> c = read_case<2>(*source);
   return build_simulation<2>(c);
 }

@@ -1,7 +1,7 @@
 #pragma once
-//! The benchmark problems. The built-in two-disk case refined to about `points` points,
-//! 2 × 2 points per cell, with the given kernel and velocity update. Shared by
-//! `pellicle bench` and bench/.
+//! The benchmark problems, shared by `pellicle bench` and bench/. The two-disk case
+//! (cases/two_disks.toml) refined to about `points` points, 2 × 2 points per cell, with the
+//! given kernel and velocity update.
 
 #include <memory>
 #include <string>
@@ -19,5 +19,10 @@ std::unique_ptr<Simulation<2>> make_bench_two_disks(long points, const std::stri
 //! `points` points: the fluid constitutive update and energy equation under load.
 std::unique_ptr<Simulation<2>> make_bench_gas_box(long points, const std::string& kernel,
                                                   const std::string& velocity_update);
+
+//! Gas inside a membrane: the quarter circle of Sulsky & York 2000 §8 (cases/
+//! fsi_quarter_circle.toml) refined to about `points` points, 16 gas points per cell, the
+//! membrane at a quarter cell, quadratic B-splines with APIC, Δt scaled with the cell.
+std::unique_ptr<Simulation<2>> make_bench_gas_membrane(long points);
 
 }  // namespace pellicle
