@@ -64,6 +64,15 @@ inline std::string case_file(const std::string& name) {
   return text.str();
 }
 
+//! A fluid body's volume-weighted mean pressure (its material's first history value).
+template <int D>
+double fluid_pressure(const Simulation<D>& s, int body) {
+  std::vector<double> values;
+  const auto& b = s.points().bodies[body];
+  s.material(b.material).history_values(s.points(), b.begin, b.end, values);
+  return values.at(0);
+}
+
 //! Mass-weighted mean velocity of a body.
 template <int D>
 Vec<D> body_velocity(const Simulation<D>& s, int body) {

@@ -22,10 +22,7 @@ std::unique_ptr<Simulation<2>> quarter_circle(const std::vector<std::string>& se
 }
 
 double gas_pressure(const Simulation<2>& s) {
-  std::vector<double> values;
-  const auto& gas = s.points().bodies[1];
-  s.material(gas.material).history_values(s.points(), gas.begin, gas.end, values);
-  return values.at(0);  // the fluid's first history value: its volume-weighted mean pressure
+  return testing::fluid_pressure(s, 1);
 }
 
 struct Inflation {
@@ -100,10 +97,7 @@ TEST(FsiQuarterCircle, HoopTensionBalancesPressureAndNormalMethodsAgree) {
 }
 
 std::string case_text() {
-  std::ifstream file(PELLICLE_CASES_DIR "/fsi_quarter_circle.toml");
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
+  return testing::case_file("fsi_quarter_circle.toml");
 }
 
 // A tether across the inside (the thesis's pre-inflation, §6.3): a string whose ends lie

@@ -27,10 +27,7 @@ std::unique_ptr<Simulation<3>> balloon(const std::string& frames) {
 }
 
 double gas_pressure(const Simulation<3>& s) {
-  std::vector<double> values;
-  const auto& gas = s.points().bodies[1];
-  s.material(gas.material).history_values(s.points(), gas.begin, gas.end, values);
-  return values.at(0);  // the fluid's first history value: its volume-weighted mean pressure
+  return testing::fluid_pressure(s, 1);
 }
 
 //! Radius of the sphere whose eighth has the volume the membrane encloses.
@@ -127,19 +124,16 @@ TEST(FsiBalloon3d, DISABLED_IsosurfaceHybridFramesSettleAtTheLaplaceRadius) {
 }
 
 TEST(FsiBalloon3d, KeepCutsAlongCoordinatePlanesAndTheFacesCloseTheEighth) {
-  std::ifstream file(PELLICLE_CASES_DIR "/fsi_balloon_3d.toml");
-  std::stringstream text;
-  text << file.rdbuf();
-  EXPECT_EQ(testing::problems_of(text.str()), "");
-  const std::string oblique =
-      testing::problems_of(text.str(), {"body[0].membrane.keep=[[1, 1, 0]]"});
+  const std::string text = testing::case_file("fsi_balloon_3d.toml");
+  EXPECT_EQ(testing::problems_of(text), "");
+  const std::string oblique = testing::problems_of(text, {"body[0].membrane.keep=[[1, 1, 0]]"});
   EXPECT_NE(oblique.find("expected coordinate directions such as [1, 0, 0]"), std::string::npos)
       << oblique;
   const std::string both =
-      testing::problems_of(text.str(), {"body[0].membrane.keep=[[1, 0, 0], [-1, 0, 0]]"});
+      testing::problems_of(text, {"body[0].membrane.keep=[[1, 0, 0], [-1, 0, 0]]"});
   EXPECT_NE(both.find("one side of the plane x = center.x, found both"), std::string::npos) << both;
   // Without the slip face z = 0 the eighth is open there: no gas can fill it.
-  const std::string open = testing::problems_of(text.str(), {"grid.boundary.z_min=free"});
+  const std::string open = testing::problems_of(text, {"grid.boundary.z_min=free"});
   EXPECT_NE(open.find("cannot fill membrane 'skin': the membrane is open at"), std::string::npos)
       << open;
 }
