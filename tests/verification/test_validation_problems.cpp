@@ -13,6 +13,8 @@
 //   sod              thesis §4.1: shock position, pressure ratio, speed within 3%; L1 falling
 //   gas-expansion    thesis §4.2: energy within 1%, falling with Δt; edge below escape speed
 //   piston-container thesis §6.1: period within 2% of the frequency equation, two masses
+//   normal-methods-fsi thesis §7.5, §7.7: connectivity and pca frames hold the gas in the
+//                    expanding cylinder and (to t = 1) the dog-bone; the quadratic colour does not
 //   two-bars-release IJNME §4.2: with contact-release the bars part; difference converges
 //   disks-wire       IJNME §4.3: the disks pinch the wire, never cross it, and part from it,
 //                    disk I to the left and disk II to the right
@@ -84,6 +86,9 @@ TEST(Validation, Drum) {
 }
 TEST(Validation, SphereBreathing) {
   expect_all_checks_pass("sphere-breathing");
+}
+TEST(Validation, NormalMethodsOnGasFilledMembranes) {
+  expect_all_checks_pass("normal-methods-fsi");
 }
 TEST(Validation, SodShockTube) {
   expect_all_checks_pass("sod");

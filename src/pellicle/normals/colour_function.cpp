@@ -7,6 +7,8 @@
 
 #include "pellicle/core/bspline.hpp"
 #include "pellicle/normals/cell_groups.hpp"
+#include "pellicle/normals/mirror_images.hpp"
+#include "pellicle/normals/principal_directions.hpp"
 
 namespace pellicle {
 
@@ -43,23 +45,28 @@ class ColourFunction final : public FrameEstimator<D> {
  public:
   ColourFunction(const FrameSetup<D>& setup, Colour kind) : setup_(setup), kind_(kind) {}
 
-  void estimate(const std::vector<Vec<D>>& x, long begin, long end, std::vector<Vec<D>>& normal,
-                std::vector<Vec<D>>& tangent) override {
+  void estimate(const std::vector<Vec<D>>& position, long begin, long end,
+                std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override {
     const std::vector<Vec<D>> previous = normal;
     const double h = setup_.cell;
+    // The colour of the points and of their images beyond the planes the membrane ends on
+    // (mirror_images.hpp), as wide as the widest (cubic) stencil.
+    const std::vector<Vec<D>> x =
+        with_mirror_images<D>(position, begin, end, setup_.mirrors, h, 2.0 * h);
+    const long cloud = static_cast<long>(x.size()), n = end - begin;
     auto xi = [&](long p) { return Vec<D>((x[p] - setup_.grid_origin) / h); };
     using Key = std::int64_t;
     std::unordered_map<Key, Vec<D>> node_normal;
     std::unordered_map<Key, double> colour;
     if (kind_ == Colour::simple) {  // eq 7.2
-      for (long p = begin; p < end; ++p)
+      for (long p = 0; p < cloud; ++p)
         stencil<D, 2>(&linear_bspline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
           auto [it, fresh] = node_normal.try_emplace(CellGroups<D>::key(i), Vec<D>::Zero());
           it->second += g / h;
         });
     } else if (kind_ == Colour::quadratic) {  // eqs 7.4–7.5: cell centres at integer ξ − ½
       std::unordered_map<Key, IVec<D>> where;
-      for (long p = begin; p < end; ++p)
+      for (long p = 0; p < cloud; ++p)
         stencil<D, 3>(&quadratic_bspline, Vec<D>(xi(p) - Vec<D>::Constant(0.5)),
                       [&](const IVec<D>& c, double N, const Vec<D>&) {
                         colour[CellGroups<D>::key(c)] += N;
@@ -73,27 +80,27 @@ class ColourFunction final : public FrameEstimator<D> {
         });
       }
     } else {  // eq 7.6: node colours with cubic B-splines
-      for (long p = begin; p < end; ++p)
+      for (long p = 0; p < cloud; ++p)
         stencil<D, 4>(&cubic_bspline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
           colour[CellGroups<D>::key(i)] += N;
         });
     }
-    for (long p = begin; p < end; ++p) {
-      Vec<D> n = Vec<D>::Zero();
+    for (long p = 0; p < n; ++p) {
+      Vec<D> g = Vec<D>::Zero();
       if (kind_ == Colour::cubic) {  // eq 7.7
-        stencil<D, 4>(&cubic_bspline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& g) {
+        stencil<D, 4>(&cubic_bspline, xi(p), [&](const IVec<D>& i, double, const Vec<D>& grad) {
           const auto it = colour.find(CellGroups<D>::key(i));
-          if (it != colour.end()) n += it->second * g / h;
+          if (it != colour.end()) g += it->second * grad / h;
         });
       } else {  // eq 7.3
         stencil<D, 2>(&linear_bspline, xi(p), [&](const IVec<D>& i, double N, const Vec<D>&) {
           const auto it = node_normal.find(CellGroups<D>::key(i));
-          if (it != node_normal.end()) n += N * it->second;
+          if (it != node_normal.end()) g += N * it->second;
         });
       }
-      normal[p] = n.norm() > 0.0 ? Vec<D>(-n.normalized()) : Vec<D>::Unit(D - 1);
+      normal[begin + p] = g.norm() > 0.0 ? Vec<D>(-g.normalized()) : Vec<D>::Unit(D - 1);
     }
-    complete_frames<D>(x, begin, end, setup_.orientation, previous, normal, tangent, h);
+    complete_frames<D>(position, begin, end, setup_.orientation, previous, normal, tangent, h);
   }
 
  private:
@@ -105,34 +112,17 @@ template <int D>
 class PrincipalComponents final : public FrameEstimator<D> {
  public:
   explicit PrincipalComponents(const FrameSetup<D>& setup) : setup_(setup) {}
-  void estimate(const std::vector<Vec<D>>& x, long begin, long end, std::vector<Vec<D>>& normal,
-                std::vector<Vec<D>>& tangent) override {
+  void estimate(const std::vector<Vec<D>>& position, long begin, long end,
+                std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override {
     const std::vector<Vec<D>> previous = normal;
-    const double r = 1.5 * setup_.cell;
-    const CellGroups<D> groups(x, begin, end, Vec<D>::Zero(), r);
+    // Neighbours include the images beyond the planes the membrane ends on (mirror_images.hpp).
+    const std::vector<Vec<D>> x =
+        with_mirror_images<D>(position, begin, end, setup_.mirrors, setup_.cell, 1.5 * setup_.cell);
+    const PrincipalDirections<D> directions(x, setup_.cell);
 #pragma omp parallel for schedule(static)
-    for (long p = begin; p < end; ++p) {
-      IVec<D> c;
-      for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / r));
-      double weight = 0.0;
-      Vec<D> mean = Vec<D>::Zero();
-      Mat<D> second = Mat<D>::Zero();
-      groups.for_each_around(c, [&](int g) {
-        for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
-          const double s = (x[*q] - x[p]).squaredNorm() / (r * r);
-          if (s >= 1.0) continue;
-          const double w = (1 - s) * (1 - s);
-          weight += w;
-          mean += w * x[*q];
-          second += w * x[*q] * x[*q].transpose();
-        }
-      });
-      mean /= weight;
-      const Mat<D> covariance = second / weight - mean * mean.transpose();
-      const Eigen::SelfAdjointEigenSolver<Mat<D>> eig(covariance);
-      normal[p] = eig.eigenvectors().col(0);  // least spread
-    }
-    complete_frames<D>(x, begin, end, setup_.orientation, previous, normal, tangent, setup_.cell);
+    for (long p = 0; p < end - begin; ++p) normal[begin + p] = directions.least_spread(p);
+    complete_frames<D>(position, begin, end, setup_.orientation, previous, normal, tangent,
+                       setup_.cell);
   }
 
  private:

@@ -10,8 +10,8 @@
 //! The colour of a lone membrane peaks on it, so its gradient there is weak and noisy (the
 //! thesis found them the least effective); the signs are settled by complete_frames.
 //! Also the principal-component estimator of point-cloud processing:
-//!   pca:      the direction of least spread of the neighbours within 1.5 cells, weighted by
-//!             (1 − (d/r)²)², about their weighted mean.
+//!   pca:      the direction of least spread of the neighbours within three point spacings,
+//!             weighted by (1 − (d/r)²)², about their weighted mean (principal_directions.hpp).
 
 #include <memory>
 

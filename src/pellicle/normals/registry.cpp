@@ -19,6 +19,10 @@ const std::vector<FrameEstimatorChoice<D>>& frame_estimators() {
        &make_isosurface_hybrid<D>},
       {"isosurface-offset", "the hybrid rule with extra points offset to one side",
        &make_isosurface_offset<D>},
+      {"isosurface-chi2", "the hybrid rule with a second extra point, χ = 2, across (§8)",
+       &make_isosurface_chi_two<D>},
+      {"isosurface-guarded", "the hybrid rule; principal directions where χ has no slope",
+       &make_isosurface_guarded<D>},
       {"mass-matrix", "linear isosurface through the normal equations (thesis §7.4)",
        &make_mass_matrix<D>},
       {"colour-simple", "gradient of the points' colour, linear (thesis §7.1)",
@@ -26,7 +30,7 @@ const std::vector<FrameEstimatorChoice<D>>& frame_estimators() {
       {"colour-quadratic", "colour on cell centres, quadratic (thesis §7.2)",
        &make_colour_quadratic<D>},
       {"colour-cubic", "colour on nodes, cubic B-splines (thesis §7.3)", &make_colour_cubic<D>},
-      {"pca", "principal components of the neighbours within 1.5 cells", &make_pca<D>},
+      {"pca", "principal components of the neighbours within three point spacings", &make_pca<D>},
   };
   return list;
 }

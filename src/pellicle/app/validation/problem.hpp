@@ -75,5 +75,6 @@ Outcome surface_half_pipe(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);
 Outcome surface_movement(Resolution resolution);
 Outcome surface_point_addition(Resolution resolution);
+Outcome normal_methods_fsi(Resolution resolution);
 
 }  // namespace pellicle::validation

@@ -1,0 +1,79 @@
+#include "pellicle/normals/principal_directions.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pellicle {
+
+namespace {
+
+template <int D>
+IVec<D> bucket(const Vec<D>& x, double size) {
+  IVec<D> c;
+  for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[d] / size));
+  return c;
+}
+
+constexpr double kSpacings = 3.0;   //!< neighbourhood radius in nearest-neighbour spacings
+constexpr double kMostCells = 1.5;  //!< and at most this many cells
+
+}  // namespace
+
+template <int D>
+double median_spacing(const std::vector<Vec<D>>& x, double search) {
+  const long n = static_cast<long>(x.size());
+  const CellGroups<D> groups(x, 0, n, Vec<D>::Zero(), search);
+  std::vector<double> nearest;
+  nearest.reserve(n);
+  for (long p = 0; p < n; ++p) {
+    double best = search * search;
+    bool found = false;
+    groups.for_each_around(bucket<D>(x[p], search), [&](int g) {
+      for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
+        const double d2 = (x[*q] - x[p]).squaredNorm();
+        if (*q != p && d2 <= best) best = d2, found = true;
+      }
+    });
+    if (found) nearest.push_back(std::sqrt(best));
+  }
+  if (nearest.empty()) return search;
+  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+  return nearest[nearest.size() / 2];
+}
+
+template <int D>
+PrincipalDirections<D>::PrincipalDirections(const std::vector<Vec<D>>& cloud, double cell)
+    : cloud_(cloud),
+      radius_(std::min(kSpacings * median_spacing<D>(cloud, kMostCells * cell), kMostCells * cell)),
+      groups_(cloud, 0, static_cast<long>(cloud.size()), Vec<D>::Zero(), radius_) {}
+
+template <int D>
+Vec<D> PrincipalDirections<D>::least_spread(long p) const {
+  const Vec<D>& x = cloud_[p];
+  double weight = 0.0;
+  Vec<D> mean = Vec<D>::Zero();
+  Mat<D> second = Mat<D>::Zero();
+  groups_.for_each_around(bucket<D>(x, radius_), [&](int g) {
+    for (const long* q = groups_.begin(g); q != groups_.end(g); ++q) {
+      const Vec<D> d = cloud_[*q] - x;  // about x: no cancellation far from the origin
+      const double s = d.squaredNorm() / (radius_ * radius_);
+      if (s >= 1.0) continue;
+      const double w = (1 - s) * (1 - s);
+      weight += w;
+      mean += w * d;
+      second += w * d * d.transpose();
+    }
+  });
+  mean /= weight;
+  const Mat<D> covariance = second / weight - mean * mean.transpose();
+  return Eigen::SelfAdjointEigenSolver<Mat<D>>(covariance).eigenvectors().col(0);
+}
+
+template class PrincipalDirections<2>;
+template class PrincipalDirections<3>;
+template double median_spacing<2>(const std::vector<Vec<2>>&, double);
+template double median_spacing<3>(const std::vector<Vec<3>>&, double);
+
+}  // namespace pellicle
