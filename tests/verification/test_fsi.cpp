@@ -141,6 +141,16 @@ point = 45
   EXPECT_EQ(s->enclosed().at(0).filler, 1);
 }
 
+// The thesis's §7.5 cylinder sits between symmetry faces and, further out, walls: only the
+// faces its ends lie on close it, so the area is the quarter disk's, not measured from the
+// walls' corner.
+TEST(FsiQuarterCircle, EnclosedVolumeIgnoresWallsTheMembraneDoesNotEndOn) {
+  auto s = testing::simulation_from_text<2>(testing::case_file("fsi_cylinder_normals.toml"));
+  const double area = enclosed_volume(s->points(), s->enclosed().at(0), Kinematics::plane_strain);
+  EXPECT_NEAR(area, std::numbers::pi / 4, 1e-3);  // a polygon through points on the circle
+  EXPECT_LT(area, std::numbers::pi / 4);
+}
+
 TEST(FsiQuarterCircle, InsideMustNameAMembraneThatEncloses) {
   const std::string text = case_text();
   EXPECT_EQ(testing::problems_of(text), "");

@@ -45,8 +45,10 @@ class Enclosure {
   //! Distance from x to the membrane or its mirror images (not to the mirror planes); when it
   //! is at least `limit`, some value not below `limit` (the search stops there).
   double distance(const Vec<D>& x, double limit = std::numeric_limits<double>::infinity()) const;
-  //! Box around the membrane in the original domain side of the planes used.
+  //! Box around the membrane and its mirror images.
   Box<D> bounds() const { return bounds_; }
+  //! The planes the membrane's open ends lie on (those that close it).
+  const std::vector<MirrorPlane>& closing_planes() const { return used_; }
 
  private:
   struct Piece {

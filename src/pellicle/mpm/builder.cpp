@@ -131,6 +131,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
   // Bodies filling a membrane's inside: their regions, and which membrane each fills.
   std::vector<RegionPtr<D>> inside_regions(bodies_.size());
   std::vector<int> filled_by(bodies_.size(), -1);
+  std::vector<std::vector<MirrorPlane>> closing(bodies_.size());  // per membrane
   for (std::size_t index = 0; index < bodies_.size(); ++index) {
     const BodySetup<D>& b = bodies_[index];
     if (b.inside.empty()) continue;
@@ -152,6 +153,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                               "': " + enclosure->problem()});
       continue;
     }
+    closing[it - bodies_.begin()] = enclosure->closing_planes();
     const double gap = b.gap >= 0.0 ? b.gap : 0.5 / b.points_per_cell;
     inside_regions[index] = make_enclosed_region<D>(std::move(enclosure), gap * cell_);
     filled_by[it - bodies_.begin()] = i;
@@ -286,7 +288,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     if (filled_by[index] < 0) continue;
     const BodySetup<D>& m = bodies_[index];
     simulation->add_enclosed({static_cast<int>(index), filled_by[index], m.membrane->connectivity,
-                              mirrors, std::max(m.membrane->longest_gap, 1e-9 * cell_),
+                              closing[index], std::max(m.membrane->longest_gap, 1e-9 * cell_),
                               m.thickness});
   }
   return simulation;
