@@ -187,7 +187,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                           "kernel " + kernel_ +
                               " has one particle size (h / points_per_cell): "
                               "every body must use the same points_per_cell"});
-    const auto& positions = placed[index];
+    auto& positions = placed[index];
     if (positions.empty()) {
       if (!b.inside.empty() && !inside_regions[index]) continue;  // reported above
       problems.push_back(
@@ -195,7 +195,8 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       continue;
     }
     bool outside = false;
-    for (const auto& [x, v] : positions) outside = outside || !grid.contains(x);
+    for (auto& [x, v] : positions)  // a curve sampled onto a face may end beyond it by round-off
+      outside = outside || !(grid.contains(x) || grid.return_to_face(x));
     if (outside) {
       problems.push_back(
           {i, "membrane", "body '" + b.name + "': membrane points lie outside the grid"});
