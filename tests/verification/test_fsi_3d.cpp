@@ -110,13 +110,7 @@ TEST(FsiBalloon3d, PcaFramesSettleAtTheLaplaceRadius) {
   expect_laplace(a, "pca");
 }
 
-// Disabled: a known failure, not a loose bound. As the membrane points move off their
-// generated places, a few dozen isosurface-hybrid normals go far wrong (near-singular local
-// systems; unsigned errors up to about 90°, interior points as well as those on the symmetry
-// faces), the membrane's stress leaves its surface and the balloon stretches well past
-// Laplace's radius. Figures: docs/validation/README.md, "3D gas-filled membranes". Enable
-// with --gtest_also_run_disabled_tests; it is to pass once the estimator is fixed.
-TEST(FsiBalloon3d, DISABLED_IsosurfaceHybridFramesSettleAtTheLaplaceRadius) {
+TEST(FsiBalloon3d, IsosurfaceHybridFramesSettleAtTheLaplaceRadius) {
   auto s = balloon("isosurface-hybrid");
   const Inflation a = run(*s);
   ASSERT_EQ(s->step_count(), 1000);

@@ -72,11 +72,31 @@ Mat3 membrane_axes(const Vec3& t, const Vec3& n) {
   return Q;
 }
 
+Mat3 normal_transport(const Vec2& from, const Vec2& to) {
+  const double sign = from.dot(to) < 0.0 ? -1.0 : 1.0;  // n and −n are the same surface
+  const double c = sign * from.dot(to), s = sign * (from.x() * to.y() - from.y() * to.x());
+  Mat3 R = Mat3::Identity();
+  R(0, 0) = R(1, 1) = c;
+  R(0, 1) = -s;
+  R(1, 0) = s;
+  return R;
+}
+
+Mat3 normal_transport(const Vec3& from, const Vec3& to) {
+  const Vec3 b = from.dot(to) < 0.0 ? Vec3(-to) : to;
+  const Vec3 v = from.cross(b);
+  const double c = from.dot(b);  // ≥ 0: the rotation is at most 90°, 1 + c ≥ 1
+  Mat3 K;
+  K << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return Mat3::Identity() + K + K * K / (1.0 + c);  // Rodrigues' formula
+}
+
 template <int D>
 void Membrane<D>::declare_columns(Particles<D>& points) {
   Material<D>::declare_columns(points);
   normal_ = points.template declare<Vec<D>>({column_names::normal, "1", true, true});
   tangent_ = points.template declare<Vec<D>>({column_names::tangent, "1", true, true});
+  strain_normal_ = points.template declare<Vec<D>>({"strain_normal", "1", false, true});
 }
 
 template <int D>
@@ -100,6 +120,7 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
   auto& strain = pts[this->strain_];
   const auto& normal = pts[normal_];
   const auto& tangent = pts[tangent_];
+  auto& strain_normal = pts[strain_normal_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double nu = poisson_;
 #pragma omp parallel for schedule(static)
@@ -107,7 +128,16 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
     const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
     const Mat3 Q = membrane_axes(tangent[p], normal[p]);
-    const Mat3 local = Q * to_mat3<D>(strain[p] + de) * Q.transpose();  // thesis eq 5.3
+    // The stored strain was resolved about last step's normal: carry it with the surface to
+    // the new one, so a rotated or re-estimated frame reads the same membrane strain and never
+    // the thickness strain as in-surface strain (docs/theory/fluid-membrane.md).
+    Mat3 carried = to_mat3<D>(strain[p]);
+    if (strain_normal[p].squaredNorm() > 0.0) {
+      const Mat3 R = normal_transport(strain_normal[p], normal[p]);
+      carried = R * carried * R.transpose();
+    }
+    strain_normal[p] = normal[p];
+    const Mat3 local = Q * (carried + to_mat3<D>(de)) * Q.transpose();  // thesis eq 5.3
     // The point stands for Δs t (2D) or ΔA t (3D) of membrane at a fixed thickness: its volume
     // follows the stretch in the surface, not the grid's velocity gradient across it (the
     // gas on one side and nothing on the other). The transfer divided the density by

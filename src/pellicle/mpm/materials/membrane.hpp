@@ -1,8 +1,10 @@
 #pragma once
 //! Membranes and strings: stress only in the tangent plane (thesis ch. 5; IJNME §3).
 //! Every step, at each point (thesis §5.3 steps 7–8):
-//!   ε̃ = ε^k + Δε                 total strain, global axes (thesis eq 5.1; §5.4.2: the
-//!                                  total strain, not only the increment, is rotated)
+//!   ε̃ = R ε^k Rᵀ + Δε            total strain, global axes (thesis eq 5.1; §5.4.2: the
+//!                                  total strain, not only the increment, is rotated); R is
+//!                                  the smallest rotation from last step's normal to this
+//!                                  step's, so the strain moves with the surface
 //!   ε' = Q ε̃ Qᵀ                   in the local frame (1' tangent, 2' second in-surface
 //!                                  direction — out of plane / hoop in 2D, t2 in 3D —, 3' normal)
 //!   law on (ε'11, ε'22, ε'12)     uniaxial: σ'11 = E ε'11 (eqs 5.5, 5.9);
@@ -36,6 +38,10 @@ enum class MembraneLaw { uniaxial, plane_stress };
 //! direction (2D: z, the out-of-plane or hoop direction; 3D: n × t), 3' normal.
 Mat3 membrane_axes(const Vec2& tangent, const Vec2& normal);
 Mat3 membrane_axes(const Vec3& tangent, const Vec3& normal);
+//! The smallest rotation taking unit normal `from` to `to` or to −`to`, whichever is nearer
+//! (a surface's normal and its negative describe the same tangent plane).
+Mat3 normal_transport(const Vec2& from, const Vec2& to);
+Mat3 normal_transport(const Vec3& from, const Vec3& to);
 
 template <int D>
 class Membrane final : public Material<D> {
@@ -75,7 +81,8 @@ class Membrane final : public Material<D> {
  private:
   double density_, young_, poisson_;
   Column<Vec<D>> normal_, tangent_;
-  bool uniaxial_;  //!< law uniaxial, or a plane-stress law in a 2D plane-stress run
+  Column<Vec<D>> strain_normal_;  //!< the normal the stored strain was last resolved about
+  bool uniaxial_;                 //!< law uniaxial, or a plane-stress law in a 2D plane-stress run
   bool one_way_;
   bool surface_volume_;
 };
