@@ -91,5 +91,27 @@ expect 2 "ragged.csv:3:1: --points: row has 3 columns, unlike the rows before it
 expect 2 "expected a connectivity-free estimator" -- \
   "$pellicle" normals --points "$work/circle.csv" --cell 1 --method connectivity --out "$work/r.csv"
 
+# Coordinates and options that cannot be numbered as cells: refused with row and column.
+for method in isosurface-hybrid mass-matrix pca; do
+  printf 'x,y\n0,0\nnan,1\n' > "$work/nan.csv"
+  expect 2 "nan.csv:3:1: --points: column 1 (x): expected a finite number, found nan" -- \
+    "$pellicle" normals --points "$work/nan.csv" --cell 0.1 --method "$method" --out "$work/r.csv"
+  printf 'x,y\n0,0\n1,1e300\n' > "$work/far.csv"
+  expect 2 "far.csv:3:1: --points: column 2 (y = 1e+300) lies 1e+301 cells from the origin" -- \
+    "$pellicle" normals --points "$work/far.csv" --cell 0.1 --method "$method" --out "$work/r.csv"
+done
+expect 2 "command line: --cell: expected a finite cell size, found nan" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell nan --out "$work/r.csv"
+expect 2 "command line: --origin: expected finite numbers, found nan" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell 0.1 --origin nan,0 --out "$work/r.csv"
+
+# Thread counts this machine cannot honour; case files that are not files.
+expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 0
+expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 100000
+expect 2 "expected a case file, found a directory" -- "$pellicle" check "$work"
+expect 2 "expected a case file, found a pipe, socket or device" -- "$pellicle" check /dev/zero
+mkfifo "$work/fifo.toml"
+expect 2 "expected a case file, found a pipe, socket or device" -- timeout 10 "$pellicle" check "$work/fifo.toml"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

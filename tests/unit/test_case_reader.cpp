@@ -186,6 +186,34 @@ TEST(CaseReader, BadSetIsReportedWithTheSetting) {
             "--set body[3].velocity=[0,0]: body[3].velocity: no element 3 in body");
 }
 
+TEST(CaseReader, BareTextInASetIsReportedWithTheSetting) {
+  // Not TOML, so read as text; its problems still name the --set argument.
+  EXPECT_EQ(problems_of(kValid, {"body[0].material=no,such"}),
+            "--set body[0].material=no,such: body[0].material: expected the name of a "
+            "[[material]], found \"no,such\"");
+}
+
+TEST(CaseReader, NamesThatWouldBreakFilesOrColumnsAreRefused) {
+  for (const char* bad : {"a,b", "a\\\"b", "../up", "a/b", "..", ""}) {
+    const std::string msg =
+        problems_of(replace(kValid, "name = \"block\"", "name = \"" + std::string(bad) + "\""));
+    EXPECT_NE(msg.find("case.toml:19:8: body[0].name: expected a name"), std::string::npos)
+        << bad << ": " << msg;
+  }
+  EXPECT_NE(problems_of(kValid, {"case.name=\"a\\nb\""})
+                .find("case.name: expected a name without line breaks"),
+            std::string::npos);
+  EXPECT_EQ(problems_of(kValid, {"case.name=\"drop test 2\""}), "");
+}
+
+TEST(CaseReader, NumbersTooSmallToComputeWithAreRefused) {
+  const std::string msg = problems_of(kValid, {"material[0].density=1e-320"});
+  EXPECT_NE(msg.find("material[0].density: expected a number > 0 of normal size"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(problems_of(kValid, {"material[0].density=1e-300"}), "");
+}
+
 const std::string kString = R"(
 [grid]
 lower = [0.0, 0.0]
@@ -232,6 +260,15 @@ TEST(CaseReader, MembraneKeysAreChecked) {
   msg = problems_of(replace(kString, "shape = \"polyline\"", "shape = \"line\""));
   EXPECT_NE(msg.find("body[0].membrane.shape: expected one of \"polyline\", \"circle\", "
                      "\"ellipse\" or \"spline\""),
+            std::string::npos)
+      << msg;
+  for (const char* count : {"points = 0", "points = 1"}) {
+    msg = problems_of(replace(kString, "points = 9", count));
+    EXPECT_NE(msg.find("body[0].membrane.points: expected an integer in [2, "), std::string::npos)
+        << count << ": " << msg;
+  }
+  msg = problems_of(replace(kString, "[[0.1, 0.5], [0.9, 0.5]]", "[[0.1, 0.5], [0.1, 0.5]]"));
+  EXPECT_NE(msg.find("body[0].membrane.vertices: expected points that are not all the same"),
             std::string::npos)
       << msg;
   msg = problems_of(replace(kString, "[0.9, 0.5]", "[1.9, 0.5]"));

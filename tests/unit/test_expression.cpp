@@ -58,6 +58,10 @@ TEST(Expression, RejectedFormulasNameColumnAndReason) {
   expect_rejected("x y", 3, "unexpected 'y'");
   expect_rejected("x $ 2", 3, "unexpected '$'");
   expect_rejected("", 1, "expected a number");
+  // A formula without variables has one value, known when it is read.
+  expect_rejected("1/0", 1, "the formula's value is infinite");
+  expect_rejected("sqrt(-1)", 1, "the formula's value is not a number");
+  EXPECT_TRUE(std::isinf(eval("1/x", {0.0, 0.0, 0.0})));  // a value at some points only: allowed
 }
 
 }  // namespace

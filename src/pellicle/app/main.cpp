@@ -1,11 +1,38 @@
 //! The `pellicle` command line.
 #include <CLI/CLI.hpp>
+#include <omp.h>
 
 #include <cstdio>
+#include <string>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/log.hpp"
+
+namespace {
+
+//! A thread count: a whole number from 1 to the machine's processors (more only slows a run:
+//! the threads wait for each other at every loop's end).
+CLI::Validator thread_count() {
+  const int processors = omp_get_num_procs();
+  return CLI::Validator(
+      [processors](std::string& text) -> std::string {
+        std::size_t used = 0;
+        long value = 0;
+        try {
+          value = std::stol(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used != text.size() || value < 1 || value > processors)
+          return "expected a whole number from 1 to " + std::to_string(processors) +
+                 " (this machine's processors), found '" + text + "'";
+        return "";
+      },
+      "INT in [1, " + std::to_string(processors) + "]");
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace pellicle;
@@ -22,14 +49,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RunOptions run;
-  auto* run_cmd = app.add_subcommand("run", "Run a case (the built-in two-disk case without CASE)");
+  auto* run_cmd =
+      app.add_subcommand("run", "Run a case (the built-in airbag demo without CASE)");
   run_cmd->add_option("case", run.case_path, "Case file (TOML)");
   run_cmd->add_option("--out", run.out_dir, "Output directory (overrides output.directory)");
   run_cmd->add_option("--set", run.overrides, "Override a case key: --set solver.end_time=0.5")
       ->allow_extra_args(false);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No summary or progress, only errors");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
-      ->check(CLI::PositiveNumber);
+      ->check(thread_count());
   run_cmd->add_option("--restart", run.restart,
                       "Continue from a checkpoint (the case may change restart-safe keys)");
   run_cmd
@@ -45,12 +73,13 @@ int main(int argc, char** argv) {
 
   BenchOptions bench;
   auto* bench_cmd =
-      app.add_subcommand("bench", "Throughput of the two-disk problem, 1 and 2 threads");
+      app.add_subcommand("bench", "Throughput (two disks; gas in a membrane), 1 and 2 threads");
   bench_cmd->add_flag("--json", bench.json, "Print a JSON list instead of text");
   bench_cmd->add_option("--points", bench.points, "Approximate number of points")
       ->check(CLI::Range(1000L, 100000000L));
   bench_cmd->add_option("--steps", bench.steps, "Timed steps")->check(CLI::Range(1L, 100000L));
-  bench_cmd->add_option("--threads", bench.threads, "Thread counts to measure (default: 1 2)");
+  bench_cmd->add_option("--threads", bench.threads, "Thread counts to measure (default: 1 2)")
+      ->check(thread_count());
 
   ValidateOptions validate;
   auto* validate_cmd = app.add_subcommand(

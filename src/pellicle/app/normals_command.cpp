@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/core/error.hpp"
+#include "pellicle/core/input_file.hpp"
 #include "pellicle/io/atomic_file.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
 #include "pellicle/normals/isosurface.hpp"
@@ -22,13 +22,25 @@ struct PointTable {
   int dimension = 0;
   bool has_exact = false;
   std::vector<std::vector<double>> rows;  //!< x, y[, z][, nx, ny[, nz]]
+  std::vector<int> lines;                 //!< each row's line in the file
 };
+
+std::string shown(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+const char* column_name(int column, int count) {
+  static const char* const names2[] = {"x", "y", "nx", "ny"};
+  static const char* const names3[] = {"x", "y", "z", "nx", "ny", "nz"};
+  return count == 2 || count == 4 ? names2[column] : names3[column];
+}
 
 //! Rows of 2, 3, 4 or 6 numbers: x y, x y z, x y nx ny, x y z nx ny nz. A first line that is
 //! not numeric is a header and may name the columns instead (x, y, z, nx, ny, nz).
 PointTable read_points(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "--points", "cannot open the file");
+  std::istringstream in(read_input_file(path, "--points", "point table", 1u << 30));
   PointTable t;
   std::string line;
   int number = 0;
@@ -61,9 +73,15 @@ PointTable read_points(const std::string& path) {
     if (t.dimension != 0 && (dimension != t.dimension || (n > 3) != t.has_exact))
       throw InputError(SourceLocation{path, number, 1}, "--points",
                        "row has " + std::to_string(n) + " columns, unlike the rows before it");
+    for (int k = 0; k < n; ++k)
+      if (!std::isfinite(values[k]))
+        throw InputError(SourceLocation{path, number, 1}, "--points",
+                         "column " + std::to_string(k + 1) + " (" + column_name(k, n) +
+                             "): expected a finite number, found " + shown(values[k]));
     t.dimension = dimension;
     t.has_exact = n == 4 || n == 6;
     t.rows.push_back(values);
+    t.lines.push_back(number);
   }
   if (t.rows.empty())
     throw InputError(SourceLocation{path, 0, 0}, "--points", "no points in the file");
@@ -80,7 +98,7 @@ int normals(const NormalsOptions& o, const PointTable& table) {
   }
   if (!choice || o.method == "connectivity")
     throw InputError(
-        SourceLocation{"--method", 0, 0}, "--method",
+        SourceLocation{"command line", 0, 0}, "--method",
         "expected a connectivity-free estimator, one of:" + known + " (not connectivity)");
   FrameSetup<D> setup;
   setup.cell = o.cell;
@@ -88,14 +106,30 @@ int normals(const NormalsOptions& o, const PointTable& table) {
     setup.grid_origin[d] = d < static_cast<int>(o.origin.size()) ? o.origin[d] : 0.0;
   if (!o.origin.empty() && static_cast<int>(o.origin.size()) != D)
     throw InputError(
-        SourceLocation{"--origin", 0, 0}, "--origin",
+        SourceLocation{"command line", 0, 0}, "--origin",
         "expected " + std::to_string(D) + " numbers for these " + std::to_string(D) + "D points");
+  for (int d = 0; d < D; ++d)
+    if (!std::isfinite(setup.grid_origin[d]))
+      throw InputError(SourceLocation{"command line", 0, 0}, "--origin",
+                       "expected finite numbers, found " + shown(setup.grid_origin[d]));
+  if (!std::isfinite(o.cell))
+    throw InputError(SourceLocation{"command line", 0, 0}, "--cell",
+                     "expected a finite cell size, found " + shown(o.cell));
   const long n = static_cast<long>(table.rows.size());
   std::vector<Vec<D>> x(n), normal(n, Vec<D>::Zero()), tangent(n, Vec<D>::Zero()), exact(n);
+  // Cells are numbered by int: a point must lie within 2^30 cells of the origin.
+  constexpr double kFarthestCell = 1073741824.0;
   for (long i = 0; i < n; ++i)
     for (int d = 0; d < D; ++d) {
       x[i][d] = table.rows[i][d];
       if (table.has_exact) exact[i][d] = table.rows[i][D + d];
+      const double cells = std::abs(x[i][d] - setup.grid_origin[d]) / o.cell;
+      if (!(cells < kFarthestCell))
+        throw InputError(SourceLocation{o.points, table.lines[i], 1}, "--points",
+                         "column " + std::to_string(d + 1) + " (" +
+                             column_name(d, static_cast<int>(table.rows[i].size())) + " = " +
+                             shown(x[i][d]) + ") lies " + shown(cells) +
+                             " cells from the origin; the grid numbers at most 2^30 each way");
     }
   auto estimator = choice->make(setup);
   estimator->estimate(x, 0, n, normal, tangent);

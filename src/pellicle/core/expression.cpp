@@ -1,5 +1,6 @@
 #include "pellicle/core/expression.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -270,6 +271,17 @@ class ExpressionParser {
 Expression::Expression(const std::string& text, const std::vector<std::string>& variables)
     : text_(text) {
   ExpressionParser(*this, variables).parse();
+  // A formula that reads no variable has one value: "1/0" or "sqrt(-1)" is refused here
+  // rather than found at the first step.
+  const bool constant = std::none_of(code_.begin(), code_.end(),
+                                     [](const Instruction& in) { return in.op == Op::variable; });
+  if (constant) {
+    const double value = evaluate(nullptr);
+    if (!std::isfinite(value))
+      throw ExpressionError(1, std::string("the formula's value is ") +
+                                   (std::isnan(value) ? "not a number" : "infinite") +
+                                   ", for every point and time");
+  }
 }
 
 bool Expression::uses(int variable) const {

@@ -64,6 +64,13 @@ class ParameterReader {
   virtual void fail(std::string_view key, std::string message) = 0;
 };
 
+//! A name that goes into file names and CSV column headers (case, body, material, probe):
+//! refuses the empty name, ".", "..", and names with a comma, a quote, a path separator or a
+//! control character (records the problem and returns the fallback "unnamed").
+std::string read_name(ParameterReader& in, std::string_view key);
+//! The same for an optional name.
+std::string read_name_or(ParameterReader& in, std::string_view key, std::string_view fallback);
+
 //! A required vector of D numbers.
 template <int D>
 Vec<D> read_vector(ParameterReader& in, std::string_view key,

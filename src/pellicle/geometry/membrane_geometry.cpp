@@ -54,15 +54,27 @@ MembraneGeometry<2> curve(ParameterReader& in, double cell) {
     return from_curve(sample_polyline({Vec2(0, 0), Vec2(1, 0)}, false, {1.0, 0}));
   }
   Sampling sampling;
-  sampling.count = static_cast<int>(in.integer_or("points", 0, 0, 100000000));
+  // 0: not given, the spacing decides; a curve needs at least its two ends.
+  sampling.count =
+      in.has("points") ? static_cast<int>(in.integer_or("points", 2, 2, 100000000)) : 0;
   if (in.has("points") && in.has("spacing")) in.fail("spacing", "give either points or spacing");
   sampling.spacing = in.number_or("spacing", 0.25 * cell, NumberRange::positive());
+  // A curve through points that all coincide has no length to place points along.
+  auto has_length = [&](const std::vector<Vec2>& points, const char* key) {
+    for (const auto& x : points)
+      if ((x - points.front()).norm() > 0.0) return true;
+    in.fail(key, "expected points that are not all the same: the curve has no length");
+    return false;
+  };
+  const std::vector<Vec2> segment{Vec2(0, 0), Vec2(1, 0)};  // stands in after a problem
   if (shape == "polyline") {
-    const auto vertices = read_points(in, "vertices", 2);
+    auto vertices = read_points(in, "vertices", 2);
+    if (!has_length(vertices, "vertices")) vertices = segment;
     return from_curve(sample_polyline(vertices, in.flag_or("closed", false), sampling));
   }
   if (shape == "spline") {
-    const auto through = read_points(in, "through", 2);
+    auto through = read_points(in, "through", 2);
+    if (!has_length(through, "through")) through = segment;
     return from_curve(sample_spline(through, in.flag_or("closed", false), sampling));
   }
   const Vec2 center = read_vector<2>(in, "center");

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/core/input_file.hpp"
 
 namespace pellicle {
 
@@ -233,6 +233,8 @@ class VertexMerger {
   std::map<std::array<long long, 3>, int> index_;
 };
 
+constexpr std::uintmax_t kLargestMesh = 1u << 30;  // bytes: 20 million binary triangles
+
 [[noreturn]] void malformed(const std::string& path, int line, const std::string& what) {
   throw InputError(SourceLocation{path, line, line > 0 ? 1 : 0}, "", what);
 }
@@ -240,9 +242,7 @@ class VertexMerger {
 }  // namespace
 
 SurfaceMesh read_stl(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) malformed(path, 0, "cannot open the STL file");
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string data = read_input_file(path, "", "STL file", kLargestMesh);
   SurfaceMesh mesh;
   VertexMerger merge(mesh);
   // Binary STL: 80-byte header, uint32 count, 50 bytes per triangle. An ASCII file may also
@@ -288,8 +288,7 @@ SurfaceMesh read_stl(const std::string& path) {
 }
 
 SurfaceMesh read_obj(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) malformed(path, 0, "cannot open the OBJ file");
+  std::istringstream in(read_input_file(path, "", "OBJ file", kLargestMesh));
   SurfaceMesh mesh;
   std::string line, word;
   int number = 0;

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "pellicle/core/input_file.hpp"
 #include "pellicle/geometry/region_factory.hpp"
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/case_source.hpp"
@@ -83,8 +84,19 @@ void apply_override(toml::table& root, const std::string& setting) {
   try {
     holder = toml::parse("value = " + value, "--set " + setting);
   } catch (const toml::parse_error&) {
-    holder = toml::table{};
-    holder.insert("value", value);
+    // As a quoted string, parsed from the same source name, so problems with it name the
+    // --set argument.
+    std::string quoted = "\"";
+    for (const char ch : value) {
+      if (ch == '"' || ch == '\\') quoted += '\\';
+      quoted += ch;
+    }
+    quoted += '"';
+    try {
+      holder = toml::parse("value = " + quoted, "--set " + setting);
+    } catch (const toml::parse_error&) {
+      throw InputError(where, path, "expected a TOML value or plain text, found \"" + value + "\"");
+    }
   }
 
   toml::table* table = &root;
@@ -124,11 +136,9 @@ std::shared_ptr<CaseSource> case_source_from_text(const std::string& text, const
 std::shared_ptr<CaseSource> load_case_source(const std::string& path,
                                              const std::vector<std::string>& overrides) {
   if (path.empty()) return case_source_from_text(default_case_text(), "<default case>", overrides);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "", "cannot open the case file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return case_source_from_text(text.str(), path, overrides);
+  constexpr std::uintmax_t kLargestCase = 16u << 20;  // bytes; a case is a page of text
+  return case_source_from_text(read_input_file(path, "", "case file", kLargestCase), path,
+                               overrides);
 }
 
 int case_dimension(const CaseSource& source) {
@@ -264,7 +274,7 @@ void read_materials(TomlParameters& root, Case<D>& c) {
   std::vector<std::string> models;
   for (const auto& m : material_models<D>()) models.push_back(m.name);
   for (auto& t : root.sub_tables("material")) {
-    const std::string name = t->text("name");
+    const std::string name = read_name(*t, "name");
     if (std::count(c.material_names.begin(), c.material_names.end(), name))
       t->fail("name", "expected a unique material name, found \"" + name + "\" again");
     const std::string model = t->choice("model", models);
@@ -322,7 +332,7 @@ void read_bodies(TomlParameters& root, Case<D>& c) {
   for (auto& t : root.sub_tables("body")) {
     BodySpec<D> b;
     b.where = t->location();
-    b.name = t->text("name");
+    b.name = read_name(*t, "name");
     if (!names.insert(b.name).second)
       t->fail("name", "expected a unique body name, found \"" + b.name + "\" again");
     const std::string material = t->text("material");
@@ -416,7 +426,7 @@ void read_probes(TomlParameters& root, Case<D>& c) {
   for (auto& t : root.sub_tables("probe")) {
     ProbeSpec<D> p;
     p.where = t->location();
-    p.name = t->text("name");
+    p.name = read_name(*t, "name");
     p.body = t->text("body");
     if (std::none_of(c.bodies.begin(), c.bodies.end(),
                      [&](const auto& b) { return b.name == p.body; }))
@@ -495,7 +505,7 @@ Case<D> read_case(const CaseSource& source) {
     const std::string stem = source.file == "<default case>"
                                  ? "default"
                                  : std::filesystem::path(source.file).stem().string();
-    c.name = meta->text_or("name", stem);
+    c.name = read_name_or(*meta, "name", stem);
     c.title = meta->text_or("title", c.name);
     c.source = meta->text_or("source", "");
     read_grid(root, c);

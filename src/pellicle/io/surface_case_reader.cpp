@@ -142,7 +142,7 @@ SurfaceCase<D> read_surface_case(const CaseSource& source) {
   {
     TomlParameters root(source.root, "", problems);
     auto meta = root.sub_table("case", false);
-    c.name = meta->text_or("name", std::filesystem::path(source.file).stem().string());
+    c.name = read_name_or(*meta, "name", std::filesystem::path(source.file).stem().string());
     c.title = meta->text_or("title", c.name);
     c.source = meta->text_or("source", "");
     read_surface(root, c, seed);

@@ -119,6 +119,12 @@ bool TomlParameters::read_number(const toml::node& node, std::string_view key, N
     wrong(&node, key, range.describe());
     return false;
   }
+  // Below 2.2e-308 a double loses its precision and its reciprocal overflows: no physical
+  // input is that small in SI units.
+  if (std::fpclassify(*v) == FP_SUBNORMAL) {
+    wrong(&node, key, range.describe() + " of normal size (0 or at least 2.2e-308 in magnitude)");
+    return false;
+  }
   out = *v;
   return true;
 }

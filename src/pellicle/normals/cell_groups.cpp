@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace pellicle {
 
@@ -13,8 +15,14 @@ CellGroups<D>::CellGroups(const std::vector<Vec<D>>& x, long begin, long end, co
   std::vector<IVec<D>> cell_of(n);
   for (long i = 0; i < n; ++i) {
     IVec<D> c;
-    for (int d = 0; d < D; ++d)
-      c[d] = static_cast<int>(std::floor((x[begin + i][d] - origin[d]) / h));
+    for (int d = 0; d < D; ++d) {
+      const double cell = std::floor((x[begin + i][d] - origin[d]) / h);
+      if (!(std::abs(cell) < 1073741824.0))  // also NaN: its cast to int is undefined
+        throw std::invalid_argument("point " + std::to_string(begin + i) +
+                                    ": coordinate not finite or more than 2^30 cells from the "
+                                    "grid origin");
+      c[d] = static_cast<int>(cell);
+    }
     cell_of[i] = c;
     keyed[i] = {key(c), begin + i};
   }

@@ -15,6 +15,8 @@ template <int D>
 class CellGroups {
  public:
   //! Group points [begin, end) of `x` by cell of a grid with a node at `origin`, cell `h`.
+  //! Throws std::invalid_argument for a point whose cell cannot be numbered (a coordinate not
+  //! finite, or 2^30 cells or more from the origin).
   CellGroups(const std::vector<Vec<D>>& x, long begin, long end, const Vec<D>& origin, double h);
 
   int size() const { return static_cast<int>(cells_.size()); }
