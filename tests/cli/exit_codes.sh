@@ -29,6 +29,18 @@ expect 0 "results   $work/default" -- "$pellicle" run --quiet --out "$work/defau
 for f in history.csv summary.json points.pvd points_000000.vtu; do
   [ -s "$work/default/$f" ] || { echo "FAIL: $f missing after a run"; failures=$((failures + 1)); }
 done
+[ "$(cat "$work/default/status")" = completed ] || { echo "FAIL: status not completed"; failures=$((failures + 1)); }
+
+# A run owns its directory: a used one is refused; --overwrite replaces Pellicle's files only
+# (the first run's extra snapshots go, a user's file stays).
+expect 2 "default is not empty (another run's results, completed): give another --out, or --overwrite" -- \
+  "$pellicle" run --quiet --out "$work/default" --set solver.end_time=0.05
+touch "$work/default/notes.txt"
+expect 0 "results" -- "$pellicle" run --quiet --overwrite --out "$work/default" \
+  --set solver.end_time=0.05 --set output.snapshot_interval=0.05
+[ -e "$work/default/notes.txt" ] || { echo "FAIL: --overwrite removed a user's file"; failures=$((failures + 1)); }
+[ "$(ls "$work/default" | grep -c '\.vtu$')" -eq 2 ] ||
+  { echo "FAIL: --overwrite left the first run's snapshots"; ls "$work/default"; failures=$((failures + 1)); }
 
 # Bad input: exit 2, nothing run, message with file:line:col and key.
 expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" check "$here/bad_key.toml"
@@ -38,7 +50,7 @@ expect 2 "--set solver.cfl=2: solver.cfl: expected a number in (0, 1], found the
   "$pellicle" check "$cases/two_disks.toml" --set solver.cfl=2
 expect 2 "cannot open the case file" -- "$pellicle" run "$work/missing.toml"
 touch "$work/a-file"
-expect 2 "output.directory: cannot create" -- "$pellicle" run --quiet --out "$work/a-file/sub"
+expect 2 "--out: cannot create $work/a-file/sub: Not a directory" -- "$pellicle" run --quiet --out "$work/a-file/sub"
 expect 2 "not expected: --no-such-flag" -- "$pellicle" run --no-such-flag
 expect 2 "--set body[0].internal_energy=-2.5: body[0].internal_energy: expected a number >= 0" -- \
   "$pellicle" check "$cases/sod_shock_tube.toml" --set 'body[0].internal_energy=-2.5'
@@ -50,6 +62,7 @@ grep -q "CFL number" "$work/err" || { echo "FAIL: CFL failure not named"; failur
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/leave" "$here/leaves_grid.toml"
 grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
   { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }
+[ "$(cat "$work/leave/status")" = failed ] || { echo "FAIL: status not failed"; failures=$((failures + 1)); }
 ls "$work/leave" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
 
 # SIGTERM: the run stops after its step, writes checkpoint.h5 and an "interrupted" summary,
@@ -65,6 +78,7 @@ wait "$run"; code=$?
 [ -f "$work/term/checkpoint.h5" ] || { echo "FAIL: no checkpoint after SIGTERM"; failures=$((failures + 1)); }
 grep -q '"status": "interrupted"' "$work/term/summary.json" ||
   { echo "FAIL: summary.json does not say interrupted"; failures=$((failures + 1)); }
+[ "$(cat "$work/term/status")" = interrupted ] || { echo "FAIL: status not interrupted"; failures=$((failures + 1)); }
 stopped=$(grep -o '"time": [0-9.e+-]*' "$work/term/summary.json" | awk '{print $2}')
 expect 0 "results" -- "$pellicle" run --quiet --threads 1 --out "$work/resumed" \
   "$cases/two_disks.toml" --set "solver.end_time=$(awk -v t="$stopped" 'BEGIN{print t + 0.002}')" \
@@ -104,6 +118,12 @@ expect 2 "command line: --cell: expected a finite cell size, found nan" -- \
   "$pellicle" normals --points "$work/circle.csv" --cell nan --out "$work/r.csv"
 expect 2 "command line: --origin: expected finite numbers, found nan" -- \
   "$pellicle" normals --points "$work/circle.csv" --cell 0.1 --origin nan,0 --out "$work/r.csv"
+
+# Runs that would never end are refused before they start.
+expect 2 "solver.cfl: the CFL step is 0 s" -- "$pellicle" check "$cases/two_disks.toml" \
+  --set 'body[0].velocity=[1e300, 0]'
+expect 2 "solver.dt: a time step of 1e-300 s takes 5e+298 steps to reach end_time = 0.05" -- \
+  "$pellicle" check "$cases/fsi_quarter_circle.toml" --set solver.dt=1e-300
 
 # Thread counts this machine cannot honour; case files that are not files.
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 0

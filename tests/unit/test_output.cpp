@@ -80,6 +80,28 @@ std::vector<unsigned char> base64_decode(const std::string& text) {
   return out;
 }
 
+TEST(Output, ARunThatReachesMaxStepsStopsAndSaysSo) {
+  // 10 steps to the end; at most 4. (pellicle run refuses this before it starts; a time
+  // step that collapses during a run is caught here.)
+  const fs::path dir = fs::temp_directory_path() / "pellicle_test_max_steps";
+  fs::remove_all(dir);
+  const auto source = case_source_from_text(kCase, "<test>", {"solver.max_steps=4"});
+  Case<2> c = read_case<2>(*source);
+  c.output.directory = dir.string();
+  auto simulation = build_simulation<2>(c);
+  OutputWriter<2> output(c.output, *simulation);
+  try {
+    run_simulation(*simulation, output, nullptr, RunControl{});
+    ADD_FAILURE() << "the run did not stop";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("solver.max_steps = 4 reached before end_time"),
+              std::string::npos)
+        << e.what();
+    EXPECT_EQ(e.context().step, 4);
+  }
+  EXPECT_NE(read_all(dir / "summary.json").find("\"status\": \"failed: "), std::string::npos);
+}
+
 TEST(Output, RunWritesCompleteFiles) {
   const fs::path dir = fs::temp_directory_path() / "pellicle_test_output";
   fs::remove_all(dir);

@@ -14,6 +14,7 @@ struct RunOptions {
   int threads = 0;                  //!< 0: OpenMP default
   std::string restart;              //!< checkpoint to continue from; empty: start fresh
   double checkpoint_interval = -1;  //!< > 0 overrides output.checkpoint_interval
+  bool overwrite = false;           //!< replace another run's files in the output directory
 };
 
 int command_run(const RunOptions& options);

@@ -1,6 +1,6 @@
 //! The `pellicle` command line.
-#include <CLI/CLI.hpp>
 #include <omp.h>
+#include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <string>
@@ -49,13 +49,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   RunOptions run;
-  auto* run_cmd =
-      app.add_subcommand("run", "Run a case (the built-in airbag demo without CASE)");
+  auto* run_cmd = app.add_subcommand("run", "Run a case (the built-in airbag demo without CASE)");
   run_cmd->add_option("case", run.case_path, "Case file (TOML)");
   run_cmd->add_option("--out", run.out_dir, "Output directory (overrides output.directory)");
   run_cmd->add_option("--set", run.overrides, "Override a case key: --set solver.end_time=0.5")
       ->allow_extra_args(false);
   run_cmd->add_flag("--quiet,-q", run.quiet, "No summary or progress, only errors");
+  run_cmd->add_flag("--overwrite", run.overwrite,
+                    "Replace another run's results in the output directory (only Pellicle's "
+                    "files are removed)");
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
       ->check(thread_count());
   run_cmd->add_option("--restart", run.restart,

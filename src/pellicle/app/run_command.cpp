@@ -13,6 +13,7 @@
 #include "pellicle/io/build.hpp"
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/output.hpp"
+#include "pellicle/io/output_directory.hpp"
 #include "pellicle/io/restart.hpp"
 #include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
@@ -90,6 +91,31 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                  c.settings.cfl_limit);
 }
 
+//! A time step that cannot reach the end time within solver.max_steps (a body so fast or
+//! stiff that the CFL step is nothing, or a dt far smaller than meant) is refused before
+//! anything runs.
+template <int D>
+void refuse_endless_runs(const Case<D>& c, const Simulation<D>& s) {
+  const double dt = s.planned_dt();
+  const double steps = (c.settings.end_time - s.time()) / dt;
+  const double allowed = static_cast<double>(c.settings.max_steps - s.step_count());
+  if (dt > 0.0 && std::isfinite(dt) && steps <= allowed) return;
+  char text[400];
+  if (c.settings.fixed_dt > 0.0)
+    std::snprintf(text, sizeof text,
+                  "a time step of %.3g s takes %.3g steps to reach end_time = %g, more than "
+                  "solver.max_steps = %ld",
+                  dt, steps, c.settings.end_time, c.settings.max_steps);
+  else
+    std::snprintf(text, sizeof text,
+                  "the CFL step is %.3g s (cell %g over the fastest signal, %.3g m/s) and takes "
+                  "%.3g steps to reach end_time = %g, more than solver.max_steps = %ld: check "
+                  "the bodies' velocities and stiffness",
+                  dt, c.cell, s.max_signal_speed(), steps, c.settings.end_time,
+                  c.settings.max_steps);
+  throw InputError(c.time_step_where, c.time_step_key, text);
+}
+
 template <int D>
 int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   std::optional<CheckpointHeader> saved;
@@ -110,6 +136,7 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
                        "the checkpoint is at t = " + std::to_string(simulation->time()) +
                            ", not before the end time: raise solver.end_time to continue");
   }
+  refuse_endless_runs(c, *simulation);
   std::vector<Probe<D>> probes;
   for (const auto& spec : c.probes) probes.emplace_back(spec, *simulation);
   if (check_only) {
@@ -118,12 +145,11 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     return kExitOk;
   }
   if (!o.quiet) print_summary(c, *simulation, stderr);
-  std::unique_ptr<OutputWriter<D>> writer;
-  try {
-    writer = std::make_unique<OutputWriter<D>>(c.output, *simulation, std::move(probes));
-  } catch (const std::runtime_error& e) {  // the output directory is part of the input
-    throw InputError(SourceLocation{c.file, 0, 0}, "output.directory", e.what());
-  }
+  claim_output_directory(c.output.directory, o.overwrite, SourceLocation{c.file, 0, 0},
+                         o.out_dir.empty() ? "output.directory" : "--out");
+  // From here a file that cannot be written (a full disk) is an output error (exit 1), not
+  // a problem of the input.
+  const auto writer = std::make_unique<OutputWriter<D>>(c.output, *simulation, std::move(probes));
   OutputWriter<D>& output = *writer;
   TerminalProgress progress(isatty(STDERR_FILENO));
   const CheckpointHeader header = checkpoint_header_for(source);

@@ -10,6 +10,7 @@
 #include "pellicle/app/terminal_progress.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/output.hpp"
+#include "pellicle/io/output_directory.hpp"
 #include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
 #include "pellicle/io/surface_output.hpp"
@@ -80,12 +81,11 @@ int run_surface(const CaseSource& source, const RunOptions& o, bool check_only) 
     return kExitOk;
   }
   if (!o.quiet) print_surface_summary(c, *simulation, stderr);
-  std::unique_ptr<SurfaceOutputWriter<D>> writer;
-  try {
-    writer = std::make_unique<SurfaceOutputWriter<D>>(c.output, *simulation, c.monitors);
-  } catch (const std::runtime_error& e) {  // the output directory is part of the input
-    throw InputError(SourceLocation{c.file, 0, 0}, "output.directory", e.what());
-  }
+  claim_output_directory(c.output.directory, o.overwrite, SourceLocation{c.file, 0, 0},
+                         o.out_dir.empty() ? "output.directory" : "--out");
+  // From here a file that cannot be written (a full disk) is an output error (exit 1), not
+  // a problem of the input.
+  const auto writer = std::make_unique<SurfaceOutputWriter<D>>(c.output, *simulation, c.monitors);
   TerminalProgress progress(isatty(STDERR_FILENO));
   RunControl control;
   control.case_hash = hash_text(case_text(source));

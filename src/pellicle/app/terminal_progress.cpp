@@ -1,5 +1,6 @@
 #include "pellicle/app/terminal_progress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -41,11 +42,17 @@ void TerminalProgress::update(const ProgressReport& r) {
     draw(r);
     return;
   }
+  constexpr double kLineEvery = 60.0;  // seconds of wall time
   const int decile = static_cast<int>(r.fraction * 10.0 + 1e-9);
-  if (decile <= last_decile_ || decile >= 10) return;
-  last_decile_ = decile;
-  std::fprintf(stderr, "progress: %3d%%  t=%.6g  step %ld  elapsed %.1f s\n", decile * 10, r.time,
-               r.step, r.wall_seconds);
+  const bool next_decile = decile > last_decile_ && decile < 10;
+  if (!next_decile && r.wall_seconds - last_line_ < kLineEvery) return;
+  last_decile_ = std::max(last_decile_, decile);
+  last_line_ = r.wall_seconds;
+  char eta[32];
+  format_duration(eta, sizeof eta,
+                  r.fraction > 0.0 ? r.wall_seconds * (1.0 - r.fraction) / r.fraction : NAN);
+  std::fprintf(stderr, "progress: %5.1f%%  t=%.6g  step %ld  elapsed %.1f s  ETA %s\n",
+               100.0 * r.fraction, r.time, r.step, r.wall_seconds, eta);
 }
 
 void TerminalProgress::finish(const ProgressReport& r) {

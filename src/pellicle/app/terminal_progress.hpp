@@ -1,5 +1,6 @@
 #pragma once
-//! Progress on stderr: a redrawn bar with ETA on a terminal, a line every 10% otherwise.
+//! Progress on stderr: a redrawn bar with ETA on a terminal; otherwise (a log file) a line
+//! with the ETA at every 10 % of simulated time and at least once a minute of wall time.
 
 #include <chrono>
 
@@ -18,6 +19,7 @@ class TerminalProgress final : public ProgressListener {
   bool interactive_;
   int last_decile_ = 0;
   double last_draw_ = -1.0;
+  double last_line_ = 0.0;  //!< wall time of the last line (log output)
 };
 
 }  // namespace pellicle

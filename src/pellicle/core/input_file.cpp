@@ -15,7 +15,8 @@ std::string read_input_file(const std::string& path, const std::string& key,
   const SourceLocation where{path, 0, 0};
   std::error_code error;
   const fs::file_status status = fs::status(path, error);
-  if (!fs::exists(status)) throw InputError(where, key, "cannot open the " + what + ": no such file");
+  if (!fs::exists(status))
+    throw InputError(where, key, "cannot open the " + what + ": no such file");
   if (fs::is_directory(status))
     throw InputError(where, key, "expected a " + what + ", found a directory");
   // A FIFO would block until written to, /dev/zero never ends.

@@ -26,8 +26,9 @@ std::string name_problem(const std::string& name) {
   if (name == "." || name == "..") return "expected a name, found \"" + name + "\"";
   for (const char c : name) {
     if (c == ',' || c == '"' || c == '\'' || c == '/' || c == '\\')
-      return std::string("expected a name without commas, quotes or path separators (it names "
-                         "files and CSV columns), found '") +
+      return std::string(
+                 "expected a name without commas, quotes or path separators (it names "
+                 "files and CSV columns), found '") +
              c + "' in \"" + name + "\"";
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
       return "expected a name without line breaks, tabs or other control characters";

@@ -257,6 +257,9 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   c.settings.cfl_fraction = s->number_or("cfl", 0.5, NumberRange::open_closed(0.0, 1.0));
   if (c.settings.fixed_dt > 0.0) c.settings.cfl_fraction = 0.0;
   c.settings.cfl_limit = s->number_or("cfl_limit", 1.0, NumberRange::positive());
+  c.settings.max_steps = s->integer_or("max_steps", c.settings.max_steps, 1, 1000000000000L);
+  c.time_step_key = s->has("dt") ? "solver.dt" : "solver.cfl";
+  c.time_step_where = s->location(s->has("dt") ? "dt" : "cfl");
   c.gravity = read_vector_or<D>(*s, "gravity", Vec<D>::Zero());
 }
 

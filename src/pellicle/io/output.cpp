@@ -10,6 +10,7 @@
 
 #include "pellicle/io/atomic_file.hpp"
 #include "pellicle/io/json_text.hpp"
+#include "pellicle/io/output_directory.hpp"
 
 namespace pellicle {
 
@@ -194,6 +195,7 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
   }
   j << "\n}\n";
   write_file_atomically(settings_.directory + "/summary.json", j.str());
+  mark_output_directory(settings_.directory, status);
 }
 
 template class OutputWriter<2>;

@@ -40,6 +40,14 @@ RunStatistics run_simulation(Engine& engine, Output& output, ProgressListener* p
   int signal = 0;
   try {
     while (!engine.finished()) {
+      if constexpr (requires { engine.settings().max_steps; }) {
+        if (engine.step_count() >= engine.settings().max_steps)
+          throw NumericalError({engine.time(), engine.step_count(), "", -1},
+                               "solver.max_steps = " + std::to_string(engine.settings().max_steps) +
+                                   " reached before end_time; the last time step was " +
+                                   std::to_string(engine.last_dt()) +
+                                   " (raise max_steps if that is meant)");
+      }
       engine.step();
       point_steps += static_cast<double>(engine.point_count());
       if (control.stop && *control.stop) {

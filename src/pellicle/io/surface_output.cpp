@@ -9,6 +9,7 @@
 
 #include "pellicle/io/atomic_file.hpp"
 #include "pellicle/io/json_text.hpp"
+#include "pellicle/io/output_directory.hpp"
 #include "pellicle/io/vtk_arrays.hpp"
 #include "pellicle/surface/errors.hpp"
 #include "pellicle/surface/quadrature.hpp"
@@ -144,6 +145,7 @@ void SurfaceOutputWriter<D>::finish(const SurfaceSimulation<D>& s, const std::st
   j << "  \"error_max\": " << json_number(e.max) << ",\n";
   j << "  \"wall_seconds\": " << json_number(wall_seconds) << "\n}\n";
   write_file_atomically(settings_.directory + "/summary.json", j.str());
+  mark_output_directory(settings_.directory, status);
 }
 
 template void write_surface_vtp<2>(const std::string&, const SurfaceSimulation<2>&);

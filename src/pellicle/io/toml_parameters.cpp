@@ -104,6 +104,11 @@ SourceLocation TomlParameters::location() const {
   return location_of(&table_, problems_.file);
 }
 
+SourceLocation TomlParameters::location(std::string_view key) const {
+  const toml::node* node = table_.get(key);
+  return location_of(node ? node : &table_, problems_.file);
+}
+
 bool TomlParameters::has(std::string_view key) const {
   return table_.contains(key);
 }

@@ -55,6 +55,8 @@ class TomlParameters final : public ParameterReader {
   std::vector<std::unique_ptr<TomlParameters>> sub_tables(std::string_view key);
   //! Where this table starts in the input.
   SourceLocation location() const;
+  //! Where `key` is given, or the table when it is not.
+  SourceLocation location(std::string_view key) const;
   //! Mark a key as understood without reading it through a getter.
   const toml::node* take(std::string_view key);
 

@@ -30,6 +30,9 @@ struct SimulationSettings {
   //! exceeds this stops the run (thesis §8.4: the critical step is h/c to 2h/c).
   double cfl_limit = 1.0;
   double end_time = 1.0;
+  //! A run that reaches this many steps before end_time stops (exit 3): a time step that has
+  //! collapsed, or one that was far smaller than meant.
+  long max_steps = 100000000;
 };
 
 //! Energies and momentum of the whole system (history.csv columns).

@@ -1,0 +1,74 @@
+#include "pellicle/io/output_directory.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <system_error>
+#include <vector>
+
+#include "pellicle/io/atomic_file.hpp"
+
+namespace pellicle {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+//! Files a run (or the plotting tools run on its results) writes.
+bool written_by_pellicle(const fs::path& file) {
+  static const std::set<std::string> names = {"history.csv", "summary.json", "status",
+                                              "checkpoint.h5"};
+  static const std::set<std::string> extensions = {".vtu", ".vti", ".vtp", ".pvd", ".png", ".part"};
+  return names.count(file.filename().string()) || extensions.count(file.extension().string());
+}
+
+//! The word in the status file a run left, or "" when there is none.
+std::string previous_status(const fs::path& directory) {
+  std::ifstream in(directory / "status");
+  std::string word;
+  in >> word;
+  return word;
+}
+
+}  // namespace
+
+void claim_output_directory(const std::string& directory, bool overwrite,
+                            const SourceLocation& where, const std::string& key) {
+  std::error_code ec;
+  if (fs::exists(directory, ec) && !fs::is_directory(directory, ec))
+    throw InputError(where, key, "cannot create " + directory + ": a file of that name exists");
+  if (fs::is_directory(directory, ec)) {
+    std::vector<fs::path> ours;
+    long others = 0;
+    for (const auto& entry : fs::directory_iterator(directory, ec)) {
+      if (entry.is_regular_file(ec) && written_by_pellicle(entry.path()))
+        ours.push_back(entry.path());
+      else
+        ++others;
+    }
+    if (!overwrite && (!ours.empty() || others > 0)) {
+      const std::string status = previous_status(directory);
+      throw InputError(
+          where, key,
+          directory + " is not empty" +
+              (ours.empty() ? std::string(" (it holds no run's results)")
+                            : " (another run's results" +
+                                  (status.empty() ? std::string() : ", " + status) + ")") +
+              ": give another --out, or --overwrite to replace Pellicle's files there");
+    }
+    for (const auto& file : ours) {
+      fs::remove(file, ec);
+      if (ec) throw InputError(where, key, "cannot remove " + file.string() + ": " + ec.message());
+    }
+  } else {
+    fs::create_directories(directory, ec);
+    if (ec) throw InputError(where, key, "cannot create " + directory + ": " + ec.message());
+  }
+  mark_output_directory(directory, "running");
+}
+
+void mark_output_directory(const std::string& directory, const std::string& status) {
+  write_file_atomically(directory + "/status", status.substr(0, status.find(':')) + "\n");
+}
+
+}  // namespace pellicle
