@@ -125,6 +125,14 @@ expect 2 "solver.cfl: the CFL step is 0 s" -- "$pellicle" check "$cases/two_disk
 expect 2 "solver.dt: a time step of 1e-300 s takes 5e+298 steps to reach end_time = 0.05" -- \
   "$pellicle" check "$cases/fsi_quarter_circle.toml" --set solver.dt=1e-300
 
+# Problems too large for the machine are refused from the case, before anything is built.
+expect 2 "body[1]: the problem needs about" -- "$pellicle" check "$cases/fsi_quarter_circle.toml" \
+  --set grid.cell=1e-4 --set solver.dt=1e-9
+expect 2 "grid.cell: expected at most 1e+07 cells on an axis" -- "$pellicle" check \
+  "$cases/two_disks.toml" --set 'grid.upper=[2147483648.0, 1.0]' --set grid.cell=1.0
+expect 0 "warning: body 'lower-disk': part of its region lies outside the grid" -- \
+  "$pellicle" check "$cases/two_disks.toml" --set 'body[0].region.center=[0.05, 0.5]'
+
 # Thread counts this machine cannot honour; case files that are not files.
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 0
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 100000

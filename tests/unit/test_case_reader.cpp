@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/io/problem_size.hpp"
 #include "support/case_text.hpp"
 
 namespace pellicle {
@@ -131,6 +132,21 @@ TEST(CaseReader, BodyOutsideTheGridHoldsNoPoints) {
                                               "lower = [2.0, 2.0], upper = [3.0, 3.0]"));
   EXPECT_NE(msg.find("body 'block': the region holds no point inside the grid"), std::string::npos)
       << msg;
+}
+
+TEST(CaseReader, ProblemSizeIsBoundedFromTheCaseAlone) {
+  // The estimate comes before any point is placed: an upper bound (regions over their
+  // bounding boxes) that is not far above what the build places.
+  for (const char* name : {"fsi_quarter_circle.toml", "two_disks.toml"}) {
+    const auto source = case_source_from_text(testing::case_file(name), name);
+    Case<2> c = read_case<2>(*source);
+    const ProblemSize size = estimate_problem_size(c);
+    const auto s = build_simulation<2>(c);
+    const double placed = static_cast<double>(s->points().size());
+    EXPECT_GE(size.points, placed) << name;
+    EXPECT_LE(size.points, 1.5 * placed) << name;  // a disk fills π/4 of its box
+    EXPECT_GE(size.nodes, static_cast<double>(s->grid().node_count())) << name;
+  }
 }
 
 TEST(CaseReader, AxisymmetricAxisMustBeSlip) {

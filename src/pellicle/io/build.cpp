@@ -1,11 +1,13 @@
 #include "pellicle/io/build.hpp"
 
+#include "pellicle/io/problem_size.hpp"
 #include "pellicle/mpm/builder.hpp"
 
 namespace pellicle {
 
 template <int D>
 std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
+  refuse_oversized_problem(c);  // before anything is allocated
   SimulationBuilder<D> builder(c.lower, c.upper, c.cell, c.faces);
   builder.settings(c.settings).kernel(c.kernel, c.transfer).gravity(c.gravity);
   for (auto& material : c.materials) builder.material(std::move(material));

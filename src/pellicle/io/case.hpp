@@ -53,6 +53,7 @@ struct Case {
   std::unique_ptr<ContactModel<D>> contact;              //!< null: the single centre-of-mass field
   std::vector<std::unique_ptr<StepHook<D>>> boundaries;  //!< [[boundary]] conditions
   std::vector<ProbeSpec<D>> probes;
+  SourceLocation cell_where;  //!< grid.cell in the input
   //! The key that sets the time step (solver.dt, or solver.cfl given or not) and where.
   std::string time_step_key;
   SourceLocation time_step_where;

@@ -179,6 +179,7 @@ void read_grid(TomlParameters& root, Case<D>& c) {
   c.lower = read_vector<D>(*grid, "lower");
   c.upper = read_vector<D>(*grid, "upper");
   c.cell = grid->number("cell", NumberRange::positive());
+  c.cell_where = grid->location("cell");
   for (int d = 0; d < D; ++d) {
     const double span = c.upper[d] - c.lower[d];
     if (span <= 0.0) {
@@ -186,6 +187,14 @@ void read_grid(TomlParameters& root, Case<D>& c) {
       break;
     }
     const double cells = span / c.cell;
+    constexpr double kMostCells = 1e7;  // per axis; the memory check bounds the product
+    if (cells > kMostCells) {
+      std::ostringstream msg;
+      msg << "expected at most " << kMostCells << " cells on an axis, found " << cells
+          << " on axis " << d;
+      grid->fail("cell", msg.str());
+      break;
+    }
     if (std::abs(cells - std::round(cells)) > 1e-6 * std::max(1.0, cells)) {
       std::ostringstream msg;
       msg << "expected (upper − lower)/cell to be a whole number of cells on every axis, found "

@@ -16,6 +16,10 @@ namespace pellicle {
 //! Written atomically.
 template <int D>
 void write_points_vtu(const std::string& path, const Simulation<D>& simulation);
+//! Memory writing one points snapshot takes at its peak: the file's text (base64, 4/3 of the
+//! arrays' bytes) held whole until it is written, and the arrays computed for it.
+template <int D>
+std::size_t points_vtu_peak_bytes(const Simulation<D>& simulation);
 
 //! Grid snapshot on the node lattice (ghost layers included): nodal mass and velocity, and
 //! the point stresses projected onto the nodes (grid_projection.hpp): `pressure`, `stress`

@@ -1,10 +1,12 @@
 #include "pellicle/mpm/builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <Eigen/Geometry>
 
+#include "pellicle/core/log.hpp"
 #include "pellicle/geometry/enclosure.hpp"
 #include "pellicle/geometry/fill.hpp"
 
@@ -102,6 +104,38 @@ std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const 
   return out;
 }
 
+//! Whether part of a region lies outside the grid box (where fills place no points): a probe
+//! of its bounding box at the fill's spacing, or coarser, at most about 10^5 samples.
+template <int D>
+bool reaches_outside(const Region<D>& region, const Vec<D>& lower, const Vec<D>& upper,
+                     double spacing) {
+  const Box<D> box = region.bounds();
+  bool beyond = false;
+  for (int d = 0; d < D; ++d) beyond = beyond || box.lower[d] < lower[d] || box.upper[d] > upper[d];
+  if (!beyond) return false;
+  double volume = 1.0;
+  for (int d = 0; d < D; ++d) volume *= box.upper[d] - box.lower[d];
+  const double step = std::max(spacing, std::pow(volume / 1e5, 1.0 / D));
+  IVec<D> count;
+  long total = 1;
+  for (int d = 0; d < D; ++d) {
+    count[d] = std::max(1, static_cast<int>(std::ceil((box.upper[d] - box.lower[d]) / step)));
+    total *= count[d];
+  }
+  for (long k = 0; k < total; ++k) {
+    Vec<D> x;
+    long rest = k;
+    bool outside = false;
+    for (int d = 0; d < D; ++d) {
+      x[d] = box.lower[d] + (static_cast<double>(rest % count[d]) + 0.5) * step;
+      rest /= count[d];
+      outside = outside || x[d] < lower[d] || x[d] > upper[d];
+    }
+    if (outside && region.contains(x)) return true;
+  }
+  return false;
+}
+
 //! The grid's wall and symmetry faces as planes.
 template <int D>
 std::vector<MirrorPlane> mirror_planes(const Vec<D>& lower, const Vec<D>& upper,
@@ -159,14 +193,22 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     filled_by[it - bodies_.begin()] = i;
   }
   std::vector<std::vector<std::pair<Vec<D>, double>>> placed(bodies_.size());
-  for (std::size_t index = 0; index < bodies_.size(); ++index)
-    placed[index] = body_points(
-        bodies_[index],
-        inside_regions[index] ? inside_regions[index].get() : bodies_[index].region.get(), lower_,
-        upper_, cell_, settings_.kinematics);
+  long total = 0;
+  for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    const BodySetup<D>& b = bodies_[index];
+    placed[index] =
+        body_points(b, inside_regions[index] ? inside_regions[index].get() : b.region.get(), lower_,
+                    upper_, cell_, settings_.kinematics);
+    total += static_cast<long>(placed[index].size());
+    if (!b.membrane && b.region && !placed[index].empty() &&
+        reaches_outside(*b.region, lower_, upper_, cell_ / b.points_per_cell))
+      log_warning("body '" + b.name +
+                  "': part of its region lies outside the grid; that part holds no points");
+  }
 
   Particles<D> points;
   for (auto& material : materials_) material->declare_columns(points);
+  points.reserve(total);  // every column once, at its final size
   for (std::size_t index = 0; index < bodies_.size(); ++index) {
     const BodySetup<D>& b = bodies_[index];
     const int i = static_cast<int>(index);

@@ -78,6 +78,18 @@ struct Particles {
     return columns[checked<T>(name)];
   }
 
+  //! Room for `points` points in every column, so appending them allocates nothing more.
+  void reserve(long points) {
+    position.reserve(points);
+    velocity.reserve(points);
+    mass.reserve(points);
+    density.reserve(points);
+    volume.reserve(points);
+    stress.reserve(points);
+    body.reserve(points);
+    columns.reserve(points);
+  }
+
   //! Append one point of the body currently being built (the last in `bodies`); its declared
   //! columns start at zero.
   void add(const Vec<D>& x, const Vec<D>& v, double m, double rho) {

@@ -113,6 +113,9 @@ class PointColumns {
   void resize(long points) {
     for (auto& e : entries_) e.storage->resize(points);
   }
+  void reserve(long points) {
+    for (auto& e : entries_) e.storage->reserve(points);
+  }
   //! Bytes held per point by the declared columns.
   std::size_t bytes_per_point() const {
     std::size_t bytes = 0;
@@ -124,6 +127,7 @@ class PointColumns {
   struct Storage {
     virtual ~Storage() = default;
     virtual void resize(long points) = 0;
+    virtual void reserve(long points) = 0;
     virtual double* data() = 0;
     virtual std::unique_ptr<Storage> clone() const = 0;
   };
@@ -133,6 +137,7 @@ class PointColumns {
                   "a column type must be a packed array of doubles");
     std::vector<T> values;
     void resize(long points) override { values.resize(points, detail::ColumnTraits<T>::zero()); }
+    void reserve(long points) override { values.reserve(points); }
     double* data() override { return reinterpret_cast<double*>(values.data()); }
     std::unique_ptr<Storage> clone() const override { return std::make_unique<Typed>(*this); }
   };

@@ -8,23 +8,18 @@
 // Checked: no gas point ever outside the membrane; total energy kept within 5 % (the thesis
 // lost 3.6 % and 3.4 % in simulations 1 and 2); from simulation 2 on, tension = p R at the
 // end within 10 %, no worse than the thesis (its hoop stress was 7–12 % above p r / t,
-// Table 6); the final radii at 0° and 90° of the finest run (simulation 4, --full) within
-// 2 % of the thesis's, those of simulations 2–3 within 5 % of the thesis's at the same cell;
-// the finest run circular within 2 % (the fast variant's last, simulation 2, within 3 %:
-// whether a fold stays next to an end point there is decided by round-off, 0.004 % with two
-// threads, 2.0 % with one). Why 5 % below the finest: the radius is set by the
-// length of membrane the folds of the first swing leave (the strain is 0.04 %), and the
-// one-way law keeps the compressive strain of points a fold crushed; the grid cannot stretch
-// one point of a cell and not its taut neighbours, so that length stays lost (the table's
-// length column). The thesis's radii change by 4.4 % from simulation 2 to 4 for this reason,
-// and its strain update regains some of that length whenever a crushed point's frame turns
-// (it reads the point's thickness strain as membrane strain; Pellicle carries the strain
-// with the frame: materials/membrane.hpp). The 5 % band catches a membrane that does not
-// expand to a circle or bursts. Simulation 1 (cell 0.4, four cells across) keeps
-// slack folds whose final state is not unique: round-off (one thread or two) moves its end
-// radii by 8 % and its tension / p R between 0.82 and 1.0, so its shape is reported, not
-// checked. The final pressures are reported beside the thesis's (Table 5): the thesis's are
-// grid averages that read low (docs/theory/fsi-problems.md §2.5).
+// Table 6); the final radii at 0° and 90° of the finest run (simulation 4, --full) within 2 %
+// of the thesis's and circular within 2 %. Simulations 2–3 are held to 5 % of the thesis's
+// radii at the same cell and the fast variant's last (simulation 2) to 3 % out of round: the
+// radius is set by the length of membrane the circle takes up (its strain is 0.04 %), and at
+// coarse cells the folds of the first swing keep some of it (the one-way law keeps a crushed
+// point's compressive strain, and the grid cannot stretch one point of a cell without its taut
+// neighbours), more or less by round-off; the table's length column shows how much. The
+// thesis's radii grow with refinement for the same reason. Simulation 1 (cell 0.4, four cells
+// across) keeps slack folds whose final state is not unique (round-off moves its end radii by
+// 8 %), so its shape is reported, not checked. The final pressures are reported beside the
+// thesis's (Table 5): the thesis's are grid averages that read low
+// (docs/theory/fsi-problems.md §2.5). Figures: docs/validation/README.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
