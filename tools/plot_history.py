@@ -1,9 +1,11 @@
 #!/usr/bin/python3
-"""Plot the energy and body histories from a Pellicle history.csv.
+"""Plot the histories in a Pellicle history.csv.
 
-Writes <prefix>energy.png (energies against time, with the relative drift of
-the total energy in the title) and <prefix>bodies.png (centre-of-mass
-position and velocity of every body against time), then prints their paths.
+MPM runs: writes <prefix>energy.png (energies against time, with the relative
+drift of the total energy in the title) and <prefix>bodies.png (centre-of-mass
+position and velocity of every body against time). Surface runs (no energies):
+writes <prefix>surface.png, every column of the history against time. Then
+prints the paths.
 """
 
 import argparse
@@ -149,14 +151,19 @@ def main():
     if os.path.isdir(path):
         path = os.path.join(path, "history.csv")
     prefix = args.out if args.out is not None else os.path.join(os.path.dirname(path), "")
-    outputs = (prefix + "energy.png", prefix + "bodies.png")
     try:
         history = read_history(path)
-        plot_energy(history, path, outputs[0])
-        plot_bodies(history, path, outputs[1])
+        if "total" in history:
+            outputs = (prefix + "energy.png", prefix + "bodies.png")
+            plot_energy(history, path, outputs[0])
+            plot_bodies(history, path, outputs[1])
+        else:  # a surface run: point counts, management, area, the PDE's totals and errors
+            outputs = (prefix + "surface.png",)
+            plot_columns(history, path, [n for n in history if n not in ("time", "step")],
+                         outputs[0])
         if args.columns:
             outputs += (prefix + "columns.png",)
-            plot_columns(history, path, args.columns.split(","), outputs[2])
+            plot_columns(history, path, args.columns.split(","), outputs[-1])
     except InputError as err:
         parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
     except OSError as err:

@@ -119,6 +119,14 @@ expect 2 "command line: --cell: expected a finite cell size, found nan" -- \
 expect 2 "command line: --origin: expected finite numbers, found nan" -- \
   "$pellicle" normals --points "$work/circle.csv" --cell 0.1 --origin nan,0 --out "$work/r.csv"
 
+# What a newcomer asks the program.
+expect 0 "pellicle 0." -- "$pellicle" --version
+expect 0 "Subcommands:" -- "$pellicle" help
+expect 0 "cases/airbag_demo.toml" -- "$pellicle" list cases
+expect 0 "isosurface-hybrid" -- "$pellicle" list estimators
+expect 0 "dogbone" -- "$pellicle" list problems
+expect 0 "points, mass 126.094 kg/m of depth" -- "$pellicle" check "$cases/two_disks.toml"
+
 # Runs that would never end are refused before they start.
 expect 2 "solver.cfl: the CFL step is 0 s" -- "$pellicle" check "$cases/two_disks.toml" \
   --set 'body[0].velocity=[1e300, 0]'

@@ -36,8 +36,12 @@ int command_bench(const BenchOptions& options);
 struct ValidateOptions {
   bool full = false;
   std::vector<std::string> only;  //!< problem names; empty: all
-  std::string out_dir;            //!< empty: docs/validation (full) or results/validation
+  std::string out_dir;            //!< empty: results/validation
+  bool update_docs = false;       //!< write into the source tree's docs/validation instead
 };
+
+//! `pellicle list cases|problems|estimators|kernels|materials`: what can be named.
+int command_list(const std::string& what);
 
 //! Exit code 1 when a check is outside its accepted range.
 int command_validate(const ValidateOptions& options);

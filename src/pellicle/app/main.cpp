@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
   });
 
   CLI::App app{"Pellicle: MPM for membranes, gases and solids"};
-  app.set_version_flag("--version", std::string(PELLICLE_VERSION));
+  app.set_version_flag("--version", std::string("pellicle ") + PELLICLE_VERSION + " (commit " +
+                                        PELLICLE_COMMIT + ", " + PELLICLE_BUILD_TYPE + " build)");
   app.require_subcommand(1);
 
   RunOptions run;
@@ -86,8 +87,9 @@ int main(int argc, char** argv) {
   ValidateOptions validate;
   auto* validate_cmd = app.add_subcommand(
       "validate", "Run the validation problems against their references; write a report and plots");
-  validate_cmd->add_flag("--full", validate.full,
-                         "Full resolution (writes docs/validation by default)");
+  validate_cmd->add_flag("--full", validate.full, "Full resolution (the seeds' grids)");
+  validate_cmd->add_flag("--update-docs", validate.update_docs,
+                         "Write the report and plots into the source tree's docs/validation");
   validate_cmd->add_option("--only", validate.only, "Run only these problems")
       ->allow_extra_args(false);
   validate_cmd->add_option("--out", validate.out_dir, "Output directory");
@@ -106,6 +108,13 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   normals_cmd->add_option("--out", normals.out, "Output CSV")->required();
 
+  std::string list_what;
+  auto* list_cmd = app.add_subcommand("list", "List what a case or command can name");
+  list_cmd->add_option("what", list_what, "cases, problems, estimators, kernels or materials")
+      ->required()
+      ->check(CLI::IsMember({"cases", "problems", "estimators", "kernels", "materials"}));
+  auto* help_cmd = app.add_subcommand("help", "Print this help");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -119,6 +128,15 @@ int main(int argc, char** argv) {
     if (*bench_cmd) return command_bench(bench);
     if (*validate_cmd) return command_validate(validate);
     if (*normals_cmd) return command_normals(normals);
+    if (*list_cmd) return command_list(list_what);
+    if (*help_cmd) {
+      // app.help() would describe the `help` subcommand just parsed; the formatter gives the
+      // program's own.
+      std::printf(
+          "%s",
+          app.get_formatter()->make_help(&app, "pellicle", CLI::AppFormatMode::Normal).c_str());
+      return kExitOk;
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     return 1;

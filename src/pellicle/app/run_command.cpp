@@ -48,20 +48,23 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                c.kernel.c_str());
   std::fprintf(out, "grid      %ld cells (", cells);
   for (int d = 0; d < D; ++d) std::fprintf(out, "%s%d", d ? " x " : "", g.cells()[d]);
-  std::fprintf(out, ") of %g, %ld nodes with ghosts\n", g.cell(), g.node_count());
+  std::fprintf(out, ") of %g m, %ld nodes with ghosts\n", g.cell(), g.node_count());
   const auto& p = s.points();
+  // Plane runs carry mass per metre of depth; axisymmetric and 3D runs the whole body's.
+  const char* mass_unit =
+      D == 2 && c.settings.kinematics != Kinematics::axisymmetric ? "kg/m of depth" : "kg";
   for (const auto& b : p.bodies) {
     double mass = 0.0;
     for (long i = b.begin; i < b.end; ++i) mass += p.mass[i];
-    std::fprintf(out, "body      %-16s %8ld points, mass %.6g, material '%s'\n", b.name.c_str(),
-                 b.count(), mass, c.material_names[b.material].c_str());
+    std::fprintf(out, "body      %-16s %8ld points, mass %.6g %s, material '%s'\n", b.name.c_str(),
+                 b.count(), mass, mass_unit, c.material_names[b.material].c_str());
   }
   const double dt = s.planned_dt();
   const double cfl = dt * s.max_wave_speed() / g.cell();
   for (const auto& b : c.bodies) {
     if (!b.membrane) continue;
     std::fprintf(out,
-                 "membrane  %-16s spacing up to %.4g (%.2g cells), thickness %g, frames '%s'\n",
+                 "membrane  %-16s spacing up to %.4g m (%.2g cells), thickness %g m, frames '%s'\n",
                  b.name.c_str(), b.membrane->longest_gap, b.membrane->longest_gap / g.cell(),
                  b.thickness, b.frames.c_str());
     if (b.membrane->longest_gap > g.cell())
@@ -80,7 +83,7 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
   std::fprintf(out, "contact   %s\n",
                s.contact() ? s.contact()->describe().c_str() : "single field (standard MPM)");
   std::fprintf(out, "points    %ld in all\n", p.size());
-  std::fprintf(out, "time      end %g, dt %.6g (%s), CFL number %.3g, about %.0f steps\n",
+  std::fprintf(out, "time      end %g s, dt %.6g s (%s), CFL number %.3g, about %.0f steps\n",
                c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,
                std::ceil(c.settings.end_time / dt));
   std::fprintf(out, "memory    about %.1f MB (state %.1f MB, writing a snapshot %.1f MB)\n",

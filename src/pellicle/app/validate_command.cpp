@@ -65,9 +65,9 @@ int command_validate(const ValidateOptions& o) {
   if (selected.empty())
     for (const auto& p : validation::problems()) selected.push_back(&p);
 
-  const fs::path dir = o.out_dir.empty()
-                           ? fs::path(o.full ? "docs/validation" : "results/validation")
-                           : fs::path(o.out_dir);
+  const fs::path dir = !o.out_dir.empty() ? fs::path(o.out_dir)
+                       : o.update_docs    ? fs::path(PELLICLE_SOURCE_DIR) / "docs" / "validation"
+                                          : fs::path("results/validation");
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) {
