@@ -56,6 +56,17 @@ expect 2 "--set body[0].internal_energy=-2.5: body[0].internal_energy: expected 
   "$pellicle" check "$cases/sod_shock_tube.toml" --set 'body[0].internal_energy=-2.5'
 expect 0 "warning   body 'gas' is a fluid moved by FLIP" -- "$pellicle" check "$cases/gas_expansion.toml"
 
+# Gas expanding: a warning once the points are more than a cell apart along the stretch
+# (symmetric rarefaction), exit 3 naming the point when it expands into vacuum.
+rarefaction=(--set body[0].density=1.0 --set body[0].internal_energy=1.0 --set body[1].density=1.0
+  --set body[1].internal_energy=1.0 --set solver.end_time=0.15)
+expect 0 "body 'high' has thinned to fewer than one point per cell along its stretch" -- \
+  "$pellicle" run --quiet --out "$work/rarefaction" "$cases/sod_shock_tube.toml" "${rarefaction[@]}" \
+  --set 'body[0].velocity=[-1.0, 0.0]' --set 'body[1].velocity=[1.0, 0.0]'
+expect 3 "the gas has expanded into vacuum beyond what its points represent" -- \
+  "$pellicle" run --quiet --out "$work/vacuum" "$cases/sod_shock_tube.toml" "${rarefaction[@]}" \
+  --set 'body[0].velocity=[-2.0, 0.0]' --set 'body[1].velocity=[2.0, 0.0]'
+
 # Numerical failure: exit 3 with time, step, body, point; history and snapshots complete.
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"
 grep -q "CFL number" "$work/err" || { echo "FAIL: CFL failure not named"; failures=$((failures + 1)); }

@@ -104,11 +104,12 @@ std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const 
   return out;
 }
 
-//! Whether part of a region lies outside the grid box (where fills place no points): a probe
-//! of its bounding box at the fill's spacing, or coarser, at most about 10^5 samples.
+//! Whether part of a region lies outside the grid box (where fills place no points) other than
+//! beyond a slip face (a symmetry plane: a quarter model's region is cut there on purpose): a
+//! probe of its bounding box at the fill's spacing, or coarser, at most about 10^5 samples.
 template <int D>
 bool reaches_outside(const Region<D>& region, const Vec<D>& lower, const Vec<D>& upper,
-                     double spacing) {
+                     const FaceConditions<D>& faces, double spacing) {
   const Box<D> box = region.bounds();
   bool beyond = false;
   for (int d = 0; d < D; ++d) beyond = beyond || box.lower[d] < lower[d] || box.upper[d] > upper[d];
@@ -129,7 +130,8 @@ bool reaches_outside(const Region<D>& region, const Vec<D>& lower, const Vec<D>&
     for (int d = 0; d < D; ++d) {
       x[d] = box.lower[d] + (static_cast<double>(rest % count[d]) + 0.5) * step;
       rest /= count[d];
-      outside = outside || x[d] < lower[d] || x[d] > upper[d];
+      outside = outside || (x[d] < lower[d] && faces[2 * d] != FaceCondition::slip) ||
+                (x[d] > upper[d] && faces[2 * d + 1] != FaceCondition::slip);
     }
     if (outside && region.contains(x)) return true;
   }
@@ -201,7 +203,7 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                     upper_, cell_, settings_.kinematics);
     total += static_cast<long>(placed[index].size());
     if (!b.membrane && b.region && !placed[index].empty() &&
-        reaches_outside(*b.region, lower_, upper_, cell_ / b.points_per_cell))
+        reaches_outside(*b.region, lower_, upper_, faces_, cell_ / b.points_per_cell))
       log_warning("body '" + b.name +
                   "': part of its region lies outside the grid; that part holds no points");
   }

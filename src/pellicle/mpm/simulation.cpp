@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/core/log.hpp"
 #include "pellicle/mpm/boundary/rigid_bodies.hpp"
 #include "pellicle/mpm/cell_density.hpp"
 
@@ -208,8 +210,18 @@ void Simulation<D>::materials(double dt) {
     const auto& material = *materials_[body.material];
     material.update(
         {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid().cell()});
-    const long invalid = material.first_invalid_point(points_, body.begin, body.end);
-    if (invalid >= 0) fail(invalid, "non-finite or negative specific internal energy");
+    const auto check = material.check_points(points_, body.begin, body.end, grid().cell());
+    if (check.invalid >= 0) fail(check.invalid, check.why);
+    if (check.spacing > 1.0 && !thinned_.count(body.name)) {
+      thinned_.insert(body.name);  // once per body
+      char text[300];
+      std::snprintf(text, sizeof text,
+                    "at t = %g body '%s' has thinned to fewer than one point per cell along its "
+                    "stretch (point %ld is %.2f cells from its neighbours): the gas there is not "
+                    "resolved; use more points per cell or a finer grid (docs/theory/gas.md)",
+                    time_, body.name.c_str(), check.thinnest - body.begin, check.spacing);
+      log_warning(text);
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 //! §2.2). The step is the named stages of DESIGN.md; the update scheme orders stages 3–7.
 
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -162,6 +163,8 @@ class Simulation final : private Stages {
   std::vector<double> hoop_rate_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;
   long step_ = 0;
+  std::set<std::string>
+      thinned_;  //!< fluid bodies already warned of thinning below a point per cell
 };
 
 extern template class Simulation<2>;

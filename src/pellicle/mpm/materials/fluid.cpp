@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 
 #include "pellicle/mpm/materials/kinematics.hpp"
 
@@ -92,18 +94,78 @@ double Fluid<D, Eos>::max_signal_speed(const Particles<D>& points, long begin, l
   return fastest;
 }
 
+namespace {
+
+//! In-plane measure of a point (2D: its area; axisymmetric: its ring's cross-section, the
+//! volume over 2π r; 3D: its volume).
+template <int D>
+double in_plane_measure(const Particles<D>& points, long p, bool axisymmetric) {
+  const double r = points.position[p][0];
+  return axisymmetric && r > 0.0 ? points.volume[p] / (2.0 * std::numbers::pi * r)
+                                 : points.volume[p];
+}
+
+//! Upper bound (Gershgorin) of the largest principal value of the in-plane strain: the
+//! logarithm of the largest stretch since the start.
+template <int D>
+double largest_stretch_bound(const Sym<D>& e) {
+  if constexpr (D == 2) {
+    return std::max(e[0], e[1]) + std::abs(e[3]);
+  } else {
+    return std::max({e[0] + std::abs(e[5]) + std::abs(e[4]), e[1] + std::abs(e[5]) + std::abs(e[3]),
+                     e[2] + std::abs(e[4]) + std::abs(e[3])});
+  }
+}
+
+}  // namespace
+
 template <int D, class Eos>
-long Fluid<D, Eos>::first_invalid_point(const Particles<D>& points, long begin, long end) const {
+typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>& points, long begin,
+                                                             long end, double cell) const {
   // A gas's pressure is Γ ρ e: negative energy would make it pull.
   const bool thermal = eos_.gruneisen() > 0.0;
+  const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
+  const double cell_measure = std::pow(cell, D);
   const auto& energy = points[energy_];
+  const auto& strain = points[this->strain_];
   long first = end;
-#pragma omp parallel for reduction(min : first) schedule(static)
+  double most_cells = 0.0, widest = 0.0;
+  // Per point: the cells its volume covers, and its spacing along its most stretched
+  // direction in cells, s0 e^ε1 / h with s0 = (V e^−tr ε)^(1/D) the spacing it started with.
+  auto spacing_in_cells = [&](long p, double measure) {
+    const Sym<D>& e = strain[p];
+    const double in_plane_trace = D == 2 ? e[0] + e[1] : e[0] + e[1] + e[2];
+    return std::pow(measure * std::exp(-in_plane_trace), 1.0 / D) *
+           std::exp(largest_stretch_bound<D>(e)) / cell;
+  };
+#pragma omp parallel for reduction(min : first) reduction(max : most_cells, widest) schedule(static)
   for (long p = begin; p < end; ++p) {
     const double e = energy[p];
     if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);
+    const double measure = in_plane_measure(points, p, axisymmetric);
+    most_cells = std::max(most_cells, measure / cell_measure);
+    widest = std::max(widest, spacing_in_cells(p, measure));
   }
-  return first < end ? first : -1;
+  typename Material<D>::PointCheck check;
+  check.spacing = widest;
+  if (widest > 1.0)  // rare: find the point (the reduction keeps only the value)
+    for (long p = begin; p < end && check.thinnest < 0; ++p)
+      if (spacing_in_cells(p, in_plane_measure(points, p, axisymmetric)) == widest)
+        check.thinnest = p;
+  if (first < end) {
+    check.invalid = first;
+    check.why = "non-finite or negative specific internal energy";
+  } else if (most_cells > kMostCellsPerPoint) {
+    for (long p = begin; p < end && check.invalid < 0; ++p)
+      if (in_plane_measure(points, p, axisymmetric) / cell_measure == most_cells) check.invalid = p;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the gas has expanded into vacuum beyond what its points represent: the point "
+                  "stands for %.3g cells (limit %g)",
+                  most_cells, kMostCellsPerPoint);
+    check.why = text;
+  }
+  return check;
 }
 
 template <int D, class Eos>

@@ -68,7 +68,11 @@ class Fluid final : public Material<D> {
            "kernel, or \"pic\", avoids it (docs/theory/gas.md)";
   }
   bool density_from_cells() const override { return from_cells_; }
-  long first_invalid_point(const Particles<D>& points, long begin, long end) const override;
+  //! Non-finite (or, for a gas, negative) internal energy; a point standing for more than
+  //! kMostCellsPerPoint cells (a gas expanding into vacuum beyond what its points represent).
+  typename Material<D>::PointCheck check_points(const Particles<D>& points, long begin, long end,
+                                                double cell) const override;
+  static constexpr double kMostCellsPerPoint = 64.0;
 
   //! Equation-of-state pressure of point p (without the artificial viscosity).
   double pressure(const Particles<D>& points, long p) const {

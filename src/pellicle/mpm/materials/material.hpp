@@ -82,9 +82,21 @@ class Material {
   //! Fluids may take their point densities from cell densities (thesis eq 4.6) instead of
   //! the continuity equation.
   virtual bool density_from_cells() const { return false; }
-  //! First point of [begin, end) whose state the model cannot continue from (a fluid's
-  //! non-finite or, for a gas, negative internal energy), or −1.
-  virtual long first_invalid_point(const Particles<D>&, long, long) const { return -1; }
+  //! The state of points [begin, end) the step must check: the first point the model cannot
+  //! continue from, and how thin a fluid has become.
+  struct PointCheck {
+    long invalid = -1;  //!< first point the model cannot continue from, or −1
+    std::string why;    //!< what is wrong with it
+    //! Fluids: the point farthest from its neighbours along its most stretched direction, and
+    //! that spacing in cells; above 1 the gas has fewer than one point per cell that way and
+    //! is no longer resolved (gaps open between the points).
+    long thinnest = -1;
+    double spacing = 0.0;
+  };
+  virtual PointCheck check_points(const Particles<D>&, long /*begin*/, long /*end*/,
+                                  double /*cell*/) const {
+    return {};
+  }
   //! The stress follows from the points' state (frames, density, energy), not from the
   //! stress before: it is settled by a zero step before the first step.
   virtual bool stress_from_state() const { return false; }
