@@ -110,6 +110,14 @@ with open(sys.argv[1], "w") as f:
 PY
 expect 0 "error     max" -- "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --method pca --out "$work/n.csv"
 [ "$(wc -l < "$work/n.csv")" -eq 101 ] || { echo "FAIL: normals output has the wrong length"; failures=$((failures + 1)); }
+# Orientation: outward from the centroid, or away from a given inside point, matches the
+# circle's exact (outward) normals; the report counts the reversed ones.
+expect 0 "side      0 of 100 normals (0 %) face opposite to the exact normal (--orient outward)" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --orient outward --out "$work/n.csv"
+expect 0 "side      0 of 100 normals (0 %) face opposite to the exact normal (--inside)" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --method pca --inside 5,5 --out "$work/n.csv"
+expect 2 "--inside: expected 2 numbers for these 2D points" -- \
+  "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --inside 5,5,1 --out "$work/n.csv"
 printf 'x,y\n1,2\n1,2,3\n' > "$work/ragged.csv"
 expect 2 "ragged.csv:3:1: --points: row has 3 columns, unlike the rows before it" -- \
   "$pellicle" normals --points "$work/ragged.csv" --cell 1 --out "$work/r.csv"

@@ -52,6 +52,8 @@ struct NormalsOptions {
   std::string method = "isosurface-hybrid";
   std::vector<double> origin;  //!< a grid node; default the origin
   std::string out;
+  std::string orient = "propagate";  //!< first signs: propagate or outward
+  std::vector<double> inside;        //!< if given: every normal faces away from this point
 };
 
 int command_normals(const NormalsOptions& options);

@@ -107,6 +107,14 @@ int main(int argc, char** argv) {
   normals_cmd->add_option("--origin", normals.origin, "A grid node, X,Y[,Z] (default 0)")
       ->delimiter(',');
   normals_cmd->add_option("--out", normals.out, "Output CSV")->required();
+  normals_cmd
+      ->add_option("--orient", normals.orient,
+                   "Signs: propagate (neighbours agree) or outward (away from the centroid)")
+      ->check(CLI::IsMember({"propagate", "outward"}));
+  normals_cmd
+      ->add_option("--inside", normals.inside,
+                   "Orient every normal away from this point, X,Y[,Z] (overrides --orient)")
+      ->delimiter(',');
 
   std::string list_what;
   auto* list_cmd = app.add_subcommand("list", "List what a case or command can name");

@@ -131,12 +131,25 @@ int normals(const NormalsOptions& o, const PointTable& table) {
                              shown(x[i][d]) + ") lies " + shown(cells) +
                              " cells from the origin; the grid numbers at most 2^30 each way");
     }
+  setup.orientation.rule =
+      o.orient == "outward" ? NormalOrientation::outward : NormalOrientation::propagate;
+  if (!o.inside.empty() && static_cast<int>(o.inside.size()) != D)
+    throw InputError(
+        SourceLocation{"command line", 0, 0}, "--inside",
+        "expected " + std::to_string(D) + " numbers for these " + std::to_string(D) + "D points");
   auto estimator = choice->make(setup);
   estimator->estimate(x, 0, n, normal, tangent);
+  if (!o.inside.empty()) {  // away from the given point, whatever the estimator chose
+    Vec<D> centre;
+    for (int d = 0; d < D; ++d) centre[d] = o.inside[d];
+    for (long i = 0; i < n; ++i)
+      if (normal[i].dot(x[i] - centre) < 0.0) normal[i] = -normal[i];
+  }
 
   std::string csv = D == 2 ? "x,y,nx,ny" : "x,y,z,nx,ny,nz";
-  csv += table.has_exact ? ",error_deg\n" : "\n";
+  csv += table.has_exact ? ",error_deg,side\n" : "\n";
   double worst = 0.0, sum = 0.0;
+  long wrong_side = 0;
   char buffer[160];
   for (long i = 0; i < n; ++i) {
     for (int d = 0; d < D; ++d) {
@@ -147,14 +160,18 @@ int normals(const NormalsOptions& o, const PointTable& table) {
       std::snprintf(buffer, sizeof buffer, ",%.10g", normal[i][d]);
       csv += buffer;
     }
-    if (table.has_exact) {  // sign ignored: these methods cannot tell the sides apart
+    if (table.has_exact) {  // the error: the angle between the lines; the side separately
       const Vec<D> e = exact[i].normalized();
       const double along = std::abs(normal[i].dot(e)),
                    across = (normal[i] - normal[i].dot(e) * e).norm();
       const double angle = std::atan2(across, along);
       worst = std::max(worst, angle);
       sum += angle * angle;
-      std::snprintf(buffer, sizeof buffer, ",%.6g", angle * 180.0 / std::numbers::pi);
+      // The side: +1 where the normal faces the exact normal's way, −1 where it is reversed.
+      const bool reversed = normal[i].dot(e) < 0.0;
+      wrong_side += reversed;
+      std::snprintf(buffer, sizeof buffer, ",%.6g,%d", angle * 180.0 / std::numbers::pi,
+                    reversed ? -1 : 1);
       csv += buffer;
     }
     csv += '\n';
@@ -163,8 +180,11 @@ int normals(const NormalsOptions& o, const PointTable& table) {
   std::printf("method    %s, %ld points, %dD, cell %g\n", o.method.c_str(), n, D, o.cell);
   if (table.has_exact) {
     const double rms = std::sqrt(sum / n);
-    std::printf("error     max %.6g rad (%.4g deg), rms %.6g rad (%.4g deg)\n", worst,
-                worst * 180 / std::numbers::pi, rms, rms * 180 / std::numbers::pi);
+    std::printf("error     max %.6g rad (%.4g deg), rms %.6g rad (%.4g deg), the line's angle\n",
+                worst, worst * 180 / std::numbers::pi, rms, rms * 180 / std::numbers::pi);
+    std::printf("side      %ld of %ld normals (%.3g %%) face opposite to the exact normal (%s)\n",
+                wrong_side, n, 100.0 * wrong_side / n,
+                o.inside.empty() ? ("--orient " + o.orient).c_str() : "--inside");
   }
   if (const auto* iso = dynamic_cast<const IsosurfaceEstimator<D>*>(estimator.get())) {
     auto c = iso->statistics().condition;
