@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "pellicle/app/validation/problem.hpp"
 #include "pellicle/app/validation/support.hpp"
@@ -47,7 +48,7 @@ Outcome gas_expansion(Resolution) {
   Outcome out;
   const double c = std::sqrt(kGamma * (kGamma - 1.0) * kEnergy);
   std::string table = "| CFL number | energy change (%) | edge radius |\n|---|---|---|\n";
-  double previous = 100.0;
+  double previous = std::numeric_limits<double>::infinity();
   for (double cfl : {0.4, 0.2, 0.1}) {
     const Expansion run = expand(cfl);
     char row[128];
@@ -55,8 +56,9 @@ Outcome gas_expansion(Resolution) {
     table += row;
     char name[96];
     std::snprintf(name, sizeof name, "|energy change|, CFL %.2f", cfl);
+    // Within 1 % at CFL 0.1; the explicit step's energy error is at least first order in Δt.
     out.checks.push_back(
-        {name, std::abs(run.energy_change), 0.0, 0.0, cfl == 0.1 ? 1.0 : previous, "%"});
+        {name, std::abs(run.energy_change), 0.0, 0.0, ladder_bound(1.0, cfl, 0.1, previous), "%"});
     previous = std::abs(run.energy_change);
     if (cfl != 0.1) continue;
     const double t = run.simulation->time();

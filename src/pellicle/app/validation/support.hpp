@@ -2,6 +2,8 @@
 //! What the validation problems share: building a simulation from a built-in case, and body
 //! averages.
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +34,14 @@ Vec<D> body_velocity(const Simulation<D>& s, int body) {
     mass += p.mass[i];
   }
   return momentum / mass;
+}
+
+//! Accepted error on one rung of a convergence ladder (a cell size or a time step `step`)
+//! whose finest rung `finest` must meet `target`: a method of at least first order has at
+//! most target × step / finest there, and every refinement must reduce the error, so it is
+//! also at most the coarser rung's error `previous` (infinity on the first rung).
+inline double ladder_bound(double target, double step, double finest, double previous) {
+  return std::min(target * step / finest, previous);
 }
 
 }  // namespace pellicle::validation

@@ -10,6 +10,7 @@
 // grid. The paper's 0.3 and 1.7 are reported, not met: see docs/validation.
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "pellicle/app/validation/problem.hpp"
 #include "pellicle/app/validation/support.hpp"
@@ -26,7 +27,7 @@ Outcome two_bars_release(Resolution) {
                 {"time", "left bar", "right bar"},
                 {{0.0, 2.0, 0.0}}};
   std::vector<double> differences;
-  double previous_gain = 1e9;
+  double previous_gain = std::numeric_limits<double>::infinity();
   for (double cell : {0.25, 0.125, 0.0625}) {
     char grid[64], dt[64];
     std::snprintf(grid, sizeof grid, "grid.cell=%g", cell);
@@ -53,7 +54,9 @@ Outcome two_bars_release(Resolution) {
     out.checks.push_back({name, right - left, 2.0, 1.5, 2.0, ""});
     const double gain = 100.0 * (largest_energy / e0 - 1.0);
     std::snprintf(name, sizeof name, "largest energy gain during the impact, cell %g", cell);
-    out.checks.push_back({name, gain, 0.0, 0.0, cell == 0.0625 ? 2.0 : previous_gain, "%"});
+    // At most 2 % at cell 0.0625, first order above it; every refinement reduces it.
+    out.checks.push_back(
+        {name, gain, 0.0, 0.0, ladder_bound(2.0, cell, 0.0625, previous_gain), "%"});
     previous_gain = gain;
     std::snprintf(name, sizeof name, "relative change of momentum, cell %g", cell);
     out.checks.push_back({name, momentum_error, 0.0, 0.0, 1e-9, ""});
