@@ -75,6 +75,9 @@ TEST(Validation, TwoBarsStick) {
 TEST(Validation, SpringMass) {
   expect_all_checks_pass("spring-mass");
 }
+TEST(Validation, Stability) {
+  expect_all_checks_pass("stability");
+}
 TEST(Validation, StringWithSlack) {
   expect_all_checks_pass("string-slack");
 }

@@ -55,6 +55,7 @@ Outcome two_disks(Resolution resolution);
 Outcome two_bars_stick(Resolution resolution);
 Outcome pendulum(Resolution resolution);
 Outcome spring_mass(Resolution resolution);
+Outcome stability(Resolution resolution);
 Outcome string_slack(Resolution resolution);
 Outcome drum(Resolution resolution);
 Outcome sphere_breathing(Resolution resolution);

@@ -25,6 +25,8 @@ const std::vector<Problem>& problems() {
        "IJNME 1999 §4.4 Fig. 23", &offset_disks},
       {"spring-mass", "Spring–mass oscillator; stability at 1.6 and 1.7 Δt_crit",
        "IJNME 1999 §3.1.1; thesis §5.5", &spring_mass},
+      {"stability", "Critical time step of a kicked bar, points at cell centres and beside nodes",
+       "thesis §8.4-8.5, Fig 91, deck A.4.11", &stability},
       {"string-slack", "String with slack, one-way law: free fall, tension, free flight",
        "IJNME 1999 §3.2; thesis §5.6", &string_slack},
       {"pendulum", "Pendulum: string with end mass against bar elements, four grids",
