@@ -132,6 +132,22 @@ bool plotted(const std::string& frames) {
   return false;
 }
 
+//! The plotted runs' histories side by side, one row per `interval` of time, as long as the
+//! reference run's (a run that failed early ends in blanks).
+Series side_by_side(const std::vector<Run>& runs, const Run& reference, std::string name,
+                    std::string title, double interval) {
+  Series series{std::move(name), std::move(title), {"time"}, {}};
+  for (const auto& r : runs)
+    if (plotted(r.frames)) series.columns.push_back(r.frames);
+  for (std::size_t k = 0; k < reference.history.size(); ++k) {
+    std::vector<double> row{interval * static_cast<double>(k)};
+    for (const auto& r : runs)
+      if (plotted(r.frames)) row.push_back(k < r.history.size() ? r.history[k] : NAN);
+    series.rows.push_back(row);
+  }
+  return series;
+}
+
 const Run& find(const std::vector<Run>& runs, const std::string& frames) {
   for (const auto& r : runs)
     if (r.frames == frames) return r;
@@ -155,19 +171,9 @@ Outcome normal_methods_fsi(Resolution resolution) {
       "| frames | run | gas points escaped | energy change (%) | radius | radius vs "
       "connectivity (%) | holds the gas |\n|---|---|---|---|---|---|---|\n";
   for (const auto& r : cylinder) table += outcome_row(r, c0, true);
-  Series radius{"cylinder_radius",
-                "Expanding cylinder: change of the mean radius (thesis Fig 73)",
-                {"time"},
-                {}};
-  for (const auto& r : cylinder)
-    if (plotted(r.frames)) radius.columns.push_back(r.frames);
-  for (std::size_t k = 0; k < c0.history.size(); ++k) {
-    std::vector<double> row{0.001 * static_cast<double>(k)};
-    for (const auto& r : cylinder)
-      if (plotted(r.frames)) row.push_back(k < r.history.size() ? r.history[k] : NAN);
-    radius.rows.push_back(row);
-  }
-  out.series.push_back(std::move(radius));
+  out.series.push_back(side_by_side(cylinder, c0, "cylinder_radius",
+                                    "Expanding cylinder: change of the mean radius (thesis Fig 73)",
+                                    0.001));
 
   out.checks.push_back({"cylinder, connectivity: gas points escaped",
                         static_cast<double>(c0.most_escaped), 0.0, 0.0, 0.0, ""});
@@ -207,17 +213,8 @@ Outcome normal_methods_fsi(Resolution resolution) {
       "| frames | run | gas points escaped | energy change (%) | radius 0° / 90° | vs "
       "connectivity (%) | holds the gas |\n|---|---|---|---|---|---|---|\n";
   for (const auto& r : dogbone) table += outcome_row(r, d0, false);
-  Series pressure{
-      "dogbone_pressure", "Quarter dog-bone: gas pressure (Sulsky & York Fig 15)", {"time"}, {}};
-  for (const auto& r : dogbone)
-    if (plotted(r.frames)) pressure.columns.push_back(r.frames);
-  for (std::size_t k = 0; k < d0.history.size(); ++k) {
-    std::vector<double> row{0.05 * static_cast<double>(k)};
-    for (const auto& r : dogbone)
-      if (plotted(r.frames)) row.push_back(k < r.history.size() ? r.history[k] : NAN);
-    pressure.rows.push_back(row);
-  }
-  out.series.push_back(std::move(pressure));
+  out.series.push_back(side_by_side(dogbone, d0, "dogbone_pressure",
+                                    "Quarter dog-bone: gas pressure (Sulsky & York Fig 15)", 0.05));
 
   const Run& pca = find(dogbone, "pca");
   for (const Run* r : {&d0, &pca}) {

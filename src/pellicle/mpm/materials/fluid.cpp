@@ -100,9 +100,9 @@ namespace {
 //! volume over 2π r; 3D: its volume).
 template <int D>
 double in_plane_measure(const Particles<D>& points, long p, bool axisymmetric) {
+  if (!axisymmetric) return points.volume[p];
   const double r = points.position[p][0];
-  return axisymmetric && r > 0.0 ? points.volume[p] / (2.0 * std::numbers::pi * r)
-                                 : points.volume[p];
+  return r > 0.0 ? points.volume[p] / (2.0 * std::numbers::pi * r) : points.volume[p];
 }
 
 //! Upper bound (Gershgorin) of the largest principal value of the in-plane strain: the
@@ -129,35 +129,35 @@ typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>&
   const auto& energy = points[energy_];
   const auto& strain = points[this->strain_];
   long first = end;
-  double most_cells = 0.0, widest = 0.0;
-  // Per point: the cells its volume covers, and its spacing along its most stretched
-  // direction in cells, s0 e^ε1 / h with s0 = (V e^−tr ε)^(1/D) the spacing it started with.
-  auto spacing_in_cells = [&](long p, double measure) {
+  double most = 0.0, widest = 0.0;  // in units of the point's measure: cell_measure later
+  // Per point: its measure (the cells it covers, times the cell's), and the D-th power of its
+  // spacing along its most stretched direction, (s0 e^ε1)^D = V e^(D ε1 − tr ε) with
+  // s0 = (V e^−tr ε)^(1/D) the spacing it started with: one exponential, no root, per point.
+  auto spacing_power = [&](long p, double measure) {
     const Sym<D>& e = strain[p];
     const double in_plane_trace = D == 2 ? e[0] + e[1] : e[0] + e[1] + e[2];
-    return std::pow(measure * std::exp(-in_plane_trace), 1.0 / D) *
-           std::exp(largest_stretch_bound<D>(e)) / cell;
+    return measure * std::exp(D * largest_stretch_bound<D>(e) - in_plane_trace);
   };
-#pragma omp parallel for reduction(min : first) reduction(max : most_cells, widest) schedule(static)
+#pragma omp parallel for reduction(min : first) reduction(max : most, widest) schedule(static)
   for (long p = begin; p < end; ++p) {
     const double e = energy[p];
     if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);
     const double measure = in_plane_measure(points, p, axisymmetric);
-    most_cells = std::max(most_cells, measure / cell_measure);
-    widest = std::max(widest, spacing_in_cells(p, measure));
+    most = std::max(most, measure);
+    widest = std::max(widest, spacing_power(p, measure));
   }
+  const double most_cells = most / cell_measure;
   typename Material<D>::PointCheck check;
-  check.spacing = widest;
-  if (widest > 1.0)  // rare: find the point (the reduction keeps only the value)
+  check.spacing = std::pow(widest / cell_measure, 1.0 / D);
+  if (widest > cell_measure)  // rare: find the point (the reduction keeps only the value)
     for (long p = begin; p < end && check.thinnest < 0; ++p)
-      if (spacing_in_cells(p, in_plane_measure(points, p, axisymmetric)) == widest)
-        check.thinnest = p;
+      if (spacing_power(p, in_plane_measure(points, p, axisymmetric)) == widest) check.thinnest = p;
   if (first < end) {
     check.invalid = first;
     check.why = "non-finite or negative specific internal energy";
   } else if (most_cells > kMostCellsPerPoint) {
     for (long p = begin; p < end && check.invalid < 0; ++p)
-      if (in_plane_measure(points, p, axisymmetric) / cell_measure == most_cells) check.invalid = p;
+      if (in_plane_measure(points, p, axisymmetric) == most) check.invalid = p;
     char text[200];
     std::snprintf(text, sizeof text,
                   "the gas has expanded into vacuum beyond what its points represent: the point "
