@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "pellicle/app/validation/riemann.hpp"
+#include "pellicle/validation/riemann.hpp"
 #include "pellicle/mpm/materials/fluid.hpp"
 
 namespace pellicle {

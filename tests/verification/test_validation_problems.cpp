@@ -1,4 +1,4 @@
-// The validation problems (src/pellicle/app/validation/) at fast resolution: every check must
+// The validation problems (src/pellicle/validation/) at fast resolution: every check must
 // lie in its accepted range. `pellicle validate --full` runs the same problems refined.
 //   bar-vibration    free–free bar period within 1% of 2L/c, every kernel, 2D and 3D
 //   cylinder-radial  axisymmetric radial modes: reversal times within 1% of the period
@@ -38,7 +38,7 @@
 
 #include <cstdio>
 
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 
 namespace pellicle::validation {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 
 #include "pellicle/app/commands.hpp"
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/builtin_cases.hpp"
 #include "pellicle/mpm/materials/material.hpp"

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "pellicle/app/commands.hpp"
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/atomic_file.hpp"
 

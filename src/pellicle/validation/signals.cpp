@@ -1,4 +1,4 @@
-#include "pellicle/app/validation/signals.hpp"
+#include "pellicle/validation/signals.hpp"
 
 namespace pellicle::validation {
 

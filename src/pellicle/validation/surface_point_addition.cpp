@@ -13,8 +13,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/surface_support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/surface_support.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/gfdm.hpp"

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 #include "pellicle/geometry/curve.hpp"
 #include "pellicle/geometry/surface_mesh.hpp"
 #include "pellicle/normals/frame_estimator.hpp"

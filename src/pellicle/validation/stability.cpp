@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <string>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 #include "pellicle/core/error.hpp"
 
 namespace pellicle::validation {

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/spectrum.hpp"

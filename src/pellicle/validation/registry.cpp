@@ -1,7 +1,7 @@
 //! The validation problems: one file each, one line here.
 #include <cstdio>
 
-#include "pellicle/app/validation/problem.hpp"
+#include "pellicle/validation/problem.hpp"
 
 namespace pellicle::validation {
 

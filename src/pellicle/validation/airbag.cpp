@@ -15,8 +15,8 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 #include "pellicle/io/checkpoint.hpp"
 #include "pellicle/io/restart.hpp"
 

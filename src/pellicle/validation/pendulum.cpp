@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/app/validation/bar_chain.hpp"
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/bar_chain.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

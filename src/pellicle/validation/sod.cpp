@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <numeric>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/riemann.hpp"
-#include "pellicle/app/validation/signals.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/riemann.hpp"
+#include "pellicle/validation/signals.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

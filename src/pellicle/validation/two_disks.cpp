@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

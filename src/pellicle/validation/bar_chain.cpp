@@ -1,4 +1,4 @@
-#include "pellicle/app/validation/bar_chain.hpp"
+#include "pellicle/validation/bar_chain.hpp"
 
 #include <cmath>
 

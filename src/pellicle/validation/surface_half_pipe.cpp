@@ -10,8 +10,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/surface_support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/surface_support.hpp"
 #include "pellicle/surface/quadrature.hpp"
 
 namespace pellicle::validation {

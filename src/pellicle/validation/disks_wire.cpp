@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

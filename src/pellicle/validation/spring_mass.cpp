@@ -8,9 +8,9 @@
 #include <limits>
 #include <numbers>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/signals.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/signals.hpp"
+#include "pellicle/validation/support.hpp"
 #include "pellicle/core/error.hpp"
 
 namespace pellicle::validation {

@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/signals.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/signals.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

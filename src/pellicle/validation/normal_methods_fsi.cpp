@@ -24,8 +24,8 @@
 #include <numbers>
 #include <string>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/mpm/enclosed_body.hpp"
 #include "pellicle/normals/frame_estimator.hpp"

@@ -4,8 +4,8 @@
 // at about t = 0.0375. Each time must agree within 10%.
 #include <cmath>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 

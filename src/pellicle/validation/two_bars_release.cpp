@@ -12,8 +12,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "pellicle/app/validation/problem.hpp"
-#include "pellicle/app/validation/support.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 

@@ -1,4 +1,4 @@
-#include "pellicle/app/validation/riemann.hpp"
+#include "pellicle/validation/riemann.hpp"
 
 #include <algorithm>
 #include <cmath>
