@@ -37,6 +37,11 @@ namespace column_names {
 inline constexpr const char* strain = "strain";    //!< accumulated small strain Σ Δε
 inline constexpr const char* normal = "normal";    //!< membrane frame: unit normal
 inline constexpr const char* tangent = "tangent";  //!< membrane frame: unit tangent (3D: t1)
+//! Specific internal energy e of thermal models (fluids).
+inline constexpr const char* internal_energy = "internal_energy";
+//! Kinetic energy per unit mass the transfers removed from a point's motion in its last
+//! to_points (APIC), which thermal models add to e (docs/theory/gas.md).
+inline constexpr const char* transfer_heat = "transfer_heat";
 }  // namespace column_names
 
 template <int D>

@@ -22,7 +22,11 @@ class TransferImpl final : public Transfer<D> {
       : options_(options), kernel_(kernel) {}
 
   void declare_columns(Particles<D>& points) override {
-    if (apic()) affine_ = points.template declare<Mat<D>>({"affine", "1/s", false, true});
+    if (!apic()) return;
+    affine_ = points.template declare<Mat<D>>({"affine", "1/s", false, true});
+    // With a thermal model present, the kinetic energy the transfers dissipate becomes heat.
+    if (points.columns.template find<double>(column_names::internal_energy).valid())
+      heat_ = points.template declare<double>({column_names::transfer_heat, "J/kg", false, true});
   }
 
   double affine_kinetic_energy(const Particles<D>& points, const Grid<D>& grid) const override {
@@ -85,57 +89,8 @@ class TransferImpl final : public Transfer<D> {
 
   double to_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
                    PointRange range) override {
-    const long n = range.last(points.size());
-    const auto& strides = grid.strides();
-    const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
-                         : options_.update == VelocityUpdate::blend ? options_.flip_fraction
-                                                                    : 0.0;
-    const bool apic_update = apic();
-    Mat<D>* affine_out = apic_update ? points[affine_].data() : nullptr;
-    const double h = grid.cell();
-    const double inertia_scale =
-        Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
-    double max_speed = 0.0;
-    long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) reduction(max : max_speed) reduction(min : first_bad)
-    for (long p = range.begin; p < n; ++p) {
-      const auto& s = stencils_[p];
-      Vec<D> v_lagrangian = Vec<D>::Zero();
-      Vec<D> v_change = Vec<D>::Zero();
-      Mat<D> affine = Mat<D>::Zero();
-      for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
-        v_lagrangian += N * grid.velocity[node];
-        v_change += N * grid.velocity_change[node];
-        if (apic_update) {
-          if constexpr (Kernel::apic_inertia > 0.0) {
-            Vec<D> dx;
-            for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-            affine += (N * inertia_scale) * grid.velocity[node] * dx.transpose();
-          } else {
-            affine += grid.velocity[node] * grad.transpose();
-          }
-        }
-      });
-      // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
-      Vec<D> x = points.position[p] + dt * v_lagrangian;
-      Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
-      // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
-      // it: the mirrored ghosts cancel its normal velocity only to round-off.
-      const bool inside = grid.contains(x) || grid.return_to_face(x);
-      points.position[p] = x;
-      points.velocity[p] = v;
-      if (apic_update) affine_out[p] = affine;
-      if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
-      max_speed = std::max(max_speed, v.norm());
-    }
-    if (first_bad != std::numeric_limits<long>::max()) {
-      failure.point = first_bad;
-      failure.what =
-          points.velocity[first_bad].allFinite() && points.position[first_bad].allFinite()
-              ? "the point left the grid domain"
-              : "non-finite position or velocity";
-    }
-    return max_speed;
+    return heat_.valid() ? move_points<true>(grid, dt, points, failure, range)
+                         : move_points<false>(grid, dt, points, failure, range);
   }
 
   int stencil_size() const override {
@@ -211,6 +166,95 @@ class TransferImpl final : public Transfer<D> {
  private:
   bool apic() const {
     return options_.update == VelocityUpdate::apic;
+  }
+
+  //! to_points; with `Heat` (APIC only) also the kinetic energy per unit mass the point's two
+  //! transfers removed this step, ½ (r_in + r_out) (docs/theory/gas.md):
+  //!   r_in  = Σ_i N_i |v_p + C_p (x_i − x_p) − ṽ_i|²   (to_grid; ṽ_i the mapped velocity)
+  //!   r_out = Σ_i N_i |v_i|² − |v_p'|² − Σ_d D_dd |C_p' e_d|²   (to_points; v_i updated)
+  //! from weighted sums (Σ N_i = 1, Σ N_i (x_i − x_p) = 0). With the B-splines' C' = B D⁻¹,
+  //! r_out = Σ_i N_i |v_i − v_p' − C_p'(x_i − x_p)|² ≥ 0; the gradient form's C' can give
+  //! energy back (r_out < 0).
+  template <bool Heat>
+  double move_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                     PointRange range) {
+    const long n = range.last(points.size());
+    const auto& strides = grid.strides();
+    const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
+                         : options_.update == VelocityUpdate::blend ? options_.flip_fraction
+                                                                    : 0.0;
+    const bool apic_update = apic();
+    Mat<D>* affine_out = apic_update ? points[affine_].data() : nullptr;
+    double* heat = Heat ? points[heat_].data() : nullptr;
+    const double h = grid.cell();
+    const double inertia_scale =
+        Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
+    double max_speed = 0.0;
+    long first_bad = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(max : max_speed) reduction(min : first_bad)
+    for (long p = range.begin; p < n; ++p) {
+      const auto& s = stencils_[p];
+      Vec<D> v_lagrangian = Vec<D>::Zero();
+      Vec<D> v_change = Vec<D>::Zero();
+      Mat<D> affine = Mat<D>::Zero();
+      // Heat only: Σ N |v_i|², Σ N |ṽ_i|², Σ N ṽ_i dxᵀ and the inertia Σ N dx_d².
+      double s_new = 0.0, s_old = 0.0;
+      Mat<D> b_old = Mat<D>::Zero();
+      Vec<D> inertia = Vec<D>::Zero();
+      for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+        const Vec<D>& v_node = grid.velocity[node];
+        v_lagrangian += N * v_node;
+        v_change += N * grid.velocity_change[node];
+        if (apic_update) {
+          Vec<D> dx;
+          for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
+          if constexpr (Kernel::apic_inertia > 0.0)
+            affine += (N * inertia_scale) * v_node * dx.transpose();
+          else
+            affine += v_node * grad.transpose();
+          if constexpr (Heat) {
+            const Vec<D> v_mapped = v_node - grid.velocity_change[node];
+            s_new += N * v_node.squaredNorm();
+            s_old += N * v_mapped.squaredNorm();
+            b_old += (N * v_mapped) * dx.transpose();
+            inertia += N * dx.cwiseAbs2();
+          }
+        }
+      });
+      if constexpr (Heat) {
+        auto affine_energy = [&inertia](const Mat<D>& c) {  // Σ N |C dx|² = Σ_d D_dd |C e_d|²
+          double e = 0.0;
+          for (int d = 0; d < D; ++d) e += inertia[d] * c.col(d).squaredNorm();
+          return e;
+        };
+        const Vec<D>& v_old = points.velocity[p];
+        const Mat<D>& c_old = affine_out[p];
+        const double r_in = s_old - 2.0 * v_old.dot(v_lagrangian - v_change) -
+                            2.0 * c_old.cwiseProduct(b_old).sum() + v_old.squaredNorm() +
+                            affine_energy(c_old);
+        const double r_out = s_new - v_lagrangian.squaredNorm() - affine_energy(affine);
+        heat[p] = 0.5 * (r_in + r_out);
+      }
+      // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
+      Vec<D> x = points.position[p] + dt * v_lagrangian;
+      Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
+      // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
+      // it: the mirrored ghosts cancel its normal velocity only to round-off.
+      const bool inside = grid.contains(x) || grid.return_to_face(x);
+      points.position[p] = x;
+      points.velocity[p] = v;
+      if (apic_update) affine_out[p] = affine;
+      if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
+      max_speed = std::max(max_speed, v.norm());
+    }
+    if (first_bad != std::numeric_limits<long>::max()) {
+      failure.point = first_bad;
+      failure.what =
+          points.velocity[first_bad].allFinite() && points.position[first_bad].allFinite()
+              ? "the point left the grid domain"
+              : "non-finite position or velocity";
+    }
+    return max_speed;
   }
 
   template <class T>
@@ -289,6 +333,7 @@ class TransferImpl final : public Transfer<D> {
 
   TransferOptions options_;
   Column<Mat<D>> affine_;  //!< APIC only: C_p
+  Column<double> heat_;    //!< APIC with a thermal model: dissipated energy per mass
   Kernel kernel_;
   std::vector<Stencil<D, Kernel>> stencils_;
   ScatterBuffers<D> buffers_;

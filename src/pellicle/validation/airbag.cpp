@@ -15,10 +15,10 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "pellicle/validation/problem.hpp"
-#include "pellicle/validation/support.hpp"
 #include "pellicle/io/checkpoint.hpp"
 #include "pellicle/io/restart.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

@@ -24,11 +24,11 @@
 #include <numbers>
 #include <string>
 
-#include "pellicle/validation/problem.hpp"
-#include "pellicle/validation/support.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/mpm/enclosed_body.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/support.hpp"
 
 namespace pellicle::validation {
 namespace {

@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/validation/problem.hpp"
 #include "pellicle/geometry/curve.hpp"
 #include "pellicle/geometry/surface_mesh.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
+#include "pellicle/validation/problem.hpp"
 
 namespace pellicle::validation {
 namespace {

@@ -61,6 +61,7 @@ Outcome drum(Resolution resolution);
 Outcome sphere_breathing(Resolution resolution);
 Outcome normals_accuracy(Resolution resolution);
 Outcome sod(Resolution resolution);
+Outcome strong_shock(Resolution resolution);
 Outcome gas_expansion(Resolution resolution);
 Outcome piston_container(Resolution resolution);
 Outcome friction_block(Resolution resolution);

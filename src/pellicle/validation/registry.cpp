@@ -42,6 +42,8 @@ const std::vector<Problem>& problems() {
        "thesis §7.5, §7.7; Sulsky & York 2000 §8 ex. 2", &normal_methods_fsi},
       {"sod", "Sod's shock tube against the exact Riemann solution, 100/200/400 cells",
        "thesis §4.1, deck A.4.1", &sod},
+      {"strong-shock", "Strong shock tube (pressure ratio 100) against the exact Riemann solution",
+       "held-out Riemann problem; thesis §4.1 set-up", &strong_shock},
       {"gas-expansion", "Quarter cylinder of gas expanding into vacuum: energy, edge speed",
        "thesis §4.2, deck A.4.2", &gas_expansion},
       {"piston-container",

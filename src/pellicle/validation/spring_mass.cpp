@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
+#include "pellicle/core/error.hpp"
 #include "pellicle/validation/problem.hpp"
 #include "pellicle/validation/signals.hpp"
 #include "pellicle/validation/support.hpp"
-#include "pellicle/core/error.hpp"
 
 namespace pellicle::validation {
 namespace {

@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <string>
 
+#include "pellicle/core/error.hpp"
 #include "pellicle/validation/problem.hpp"
 #include "pellicle/validation/support.hpp"
-#include "pellicle/core/error.hpp"
 
 namespace pellicle::validation {
 namespace {

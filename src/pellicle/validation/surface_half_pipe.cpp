@@ -10,9 +10,9 @@
 #include <cmath>
 #include <cstdio>
 
+#include "pellicle/surface/quadrature.hpp"
 #include "pellicle/validation/problem.hpp"
 #include "pellicle/validation/surface_support.hpp"
-#include "pellicle/surface/quadrature.hpp"
 
 namespace pellicle::validation {
 

@@ -13,12 +13,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "pellicle/validation/problem.hpp"
-#include "pellicle/validation/surface_support.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/management.hpp"
+#include "pellicle/validation/problem.hpp"
+#include "pellicle/validation/surface_support.hpp"
 
 namespace pellicle::validation {
 

@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <numbers>
 
-#include "pellicle/validation/problem.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/spectrum.hpp"
+#include "pellicle/validation/problem.hpp"
 
 namespace pellicle::validation {
 

@@ -21,7 +21,7 @@ Fluid<D, Eos>::Fluid(Kinematics kinematics, double density, Eos eos, FluidViscos
 template <int D, class Eos>
 void Fluid<D, Eos>::declare_columns(Particles<D>& points) {
   Material<D>::declare_columns(points);  // the strain: tr ε drives the barotropic law (eq 6.1)
-  energy_ = points.template declare<double>({"internal_energy", "J/kg", true, true});
+  energy_ = points.template declare<double>({column_names::internal_energy, "J/kg", true, true});
 }
 
 template <int D, class Eos>
@@ -36,6 +36,9 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
   auto& pts = step.points;
   auto& strain = pts[this->strain_];
   auto& energy = pts[energy_];
+  // Kinetic energy the transfers dissipated this step (APIC), if the transfer keeps it.
+  const Column<double> heat_column = pts.columns.template find<double>(column_names::transfer_heat);
+  const double* heat = heat_column.valid() ? pts[heat_column].data() : nullptr;
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double gruneisen = eos_.gruneisen();
   const double inv_dt = step.dt > 0.0 ? 1.0 / step.dt : 0.0;
@@ -47,7 +50,7 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
     const double rho_new = pts.density[p];
     const double rho_old = rho_new * (1.0 + dv);  // continuity (eq 4.7) run backwards
     const double strain_old = trace<D>(strain[p]);
-    const double e_old = energy[p];
+    const double e_old = energy[p] + (heat ? heat[p] : 0.0);  // the transfers' heat
     const double p_old = eos_.cold_pressure(rho_old, strain_old) + gruneisen * rho_old * e_old;
     strain[p] += de;
 
