@@ -56,6 +56,57 @@ expect 2 "--set body[0].internal_energy=-2.5: body[0].internal_energy: expected 
   "$pellicle" check "$cases/sod_shock_tube.toml" --set 'body[0].internal_energy=-2.5'
 expect 0 "warning   body 'gas' is a fluid moved by FLIP" -- "$pellicle" check "$cases/gas_expansion.toml"
 
+# A full disk is an output error: exit 1, naming the file or directory that could not be
+# written, never "a problem in the input" (the input was fine). Simulated without root by a
+# file size limit: with SIGXFSZ ignored, a write past it fails with EFBIG, as on a full disk.
+# The command's messages go through a pipe, which the limit spares.
+no_room() {  # no_room KIB DIR [ARGS…]: a short run whose files cannot grow past KIB KiB
+  local kib=$1 out=$2
+  shift 2
+  (trap '' XFSZ; ulimit -f "$kib"; exec "$pellicle" run --quiet --threads 1 --out "$out" "$@") \
+    2>&1 >/dev/null
+}
+expect_output_error() {  # expect_output_error LABEL CODE MESSAGES PATTERN
+  local label=$1 code=$2 messages=$3 pattern=$4
+  if [ "$code" -ne 1 ]; then
+    echo "FAIL: $label exited $code, expected 1"; echo "$messages"; failures=$((failures + 1))
+  elif ! grep -qF -- "$pattern" <<<"$messages"; then
+    echo "FAIL: $label did not print: $pattern"; echo "$messages"; failures=$((failures + 1))
+  elif grep -qi "input" <<<"$messages"; then
+    echo "FAIL: $label blamed the input"; echo "$messages"; failures=$((failures + 1))
+  else
+    echo "ok: $label -> 1"
+  fi
+}
+messages=$(no_room 0 "$work/full" "$cases/two_disks.toml" --set solver.end_time=0.05)
+expect_output_error "full disk at the first write" $? "$messages" "cannot write $work/full/"
+messages=$(no_room 0 "$work/full-surface" "$cases/surface_cdr_sphere.toml" \
+  --set surface.smoothing_length=0.4 --set solver.end_time=0.01)
+expect_output_error "full disk at a surface run's first write" $? "$messages" \
+  "cannot write $work/full-surface/"
+# Room for the status and the history's first rows, not for the first snapshot.
+messages=$(no_room 8 "$work/snapshot" "$cases/two_disks.toml" --set solver.end_time=0.05)
+expect_output_error "full disk at the first snapshot" $? "$messages" \
+  "cannot write $work/snapshot/points_000000.vtu"
+ls "$work/snapshot" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
+# A file system with no room even for the output directory: a tmpfs with no inode left
+# refuses new directories (ENOSPC). Where the system lets a user mount one in a namespace of
+# its own; elsewhere this check is skipped.
+mkdir "$work/tiny"
+full_tmpfs() {  # full_tmpfs DIR COMMAND…: COMMAND with a full tmpfs mounted on DIR
+  unshare --user --map-root-user --mount sh -c \
+    'mount -t tmpfs -o size=64k,nr_inodes=2 tmpfs "$1" && touch "$1/filler" || exit 99
+     shift; exec "$@"' sh "$@"
+}
+if full_tmpfs "$work/tiny" true 2>/dev/null; then
+  messages=$(full_tmpfs "$work/tiny" "$pellicle" run --quiet --threads 1 --out "$work/tiny/out" \
+    "$cases/two_disks.toml" --set solver.end_time=0.05 2>&1 >/dev/null)
+  expect_output_error "full disk at the output directory" $? "$messages" \
+    "cannot create $work/tiny/out: No space left on device"
+else
+  echo "skip: cannot mount a full file system in a user namespace here"
+fi
+
 # Gas expanding: a warning once the points are more than a cell apart along the stretch
 # (symmetric rarefaction), exit 3 naming the point when it expands into vacuum.
 rarefaction=(--set body[0].density=1.0 --set body[0].internal_energy=1.0 --set body[1].density=1.0

@@ -20,8 +20,10 @@ void write_file_atomically(const std::string& path, std::string_view content) {
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
-  if (ec)
+  if (ec) {
+    std::remove(temporary.c_str());  // never leave the temporary behind
     throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+  }
 }
 
 }  // namespace pellicle

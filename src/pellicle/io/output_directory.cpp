@@ -1,8 +1,10 @@
 #include "pellicle/io/output_directory.hpp"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <stdexcept>
 #include <system_error>
 #include <vector>
 
@@ -20,6 +22,13 @@ bool written_by_pellicle(const fs::path& file) {
                                               "checkpoint.h5"};
   static const std::set<std::string> extensions = {".vtu", ".vti", ".vtp", ".pvd", ".png", ".part"};
   return names.count(file.filename().string()) || extensions.count(file.extension().string());
+}
+
+//! The file system is full or failing, whatever the path (ENOSPC, EDQUOT, EIO).
+bool device_failure(const std::error_code& ec) {
+  const std::error_condition c = ec.default_error_condition();
+  return c == std::errc::no_space_on_device || c == std::errc::io_error ||
+         c == std::error_condition(EDQUOT, std::generic_category());
 }
 
 //! The word in the status file a run left, or "" when there is none.
@@ -62,6 +71,10 @@ void claim_output_directory(const std::string& directory, bool overwrite,
     }
   } else {
     fs::create_directories(directory, ec);
+    // A path that cannot be a directory (a file in the way, no permission) is the input's
+    // fault; a device that has no room or fails is not: an output error (exit 1).
+    if (ec && device_failure(ec))
+      throw std::runtime_error("cannot create " + directory + ": " + ec.message());
     if (ec) throw InputError(where, key, "cannot create " + directory + ": " + ec.message());
   }
   mark_output_directory(directory, "running");

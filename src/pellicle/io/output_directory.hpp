@@ -12,7 +12,9 @@ namespace pellicle {
 //! Make `directory` this run's. Created if missing; a directory that holds anything is
 //! refused (InputError at `where`, key `key`) unless `overwrite`, which removes Pellicle's
 //! own files there (history, summary, status, snapshots and their series, the checkpoint,
-//! the plots) and leaves every other file. Then marks it running.
+//! the plots) and leaves every other file. Then marks it running. A directory that cannot
+//! be created for want of room (or a failing device), and a status file that cannot be
+//! written, are output errors (std::runtime_error naming the path), not the input's.
 void claim_output_directory(const std::string& directory, bool overwrite,
                             const SourceLocation& where, const std::string& key);
 

@@ -14,7 +14,7 @@ Probe<D>::Probe(const ProbeSpec<D>& spec, const Simulation<D>& simulation) : spe
     if (b.name == spec.body) body = &b;
   if (!body) throw InputError(spec.where, "probe.body", "no body named \"" + spec.body + "\"");
   for (long index : {spec.a, spec.b})
-    if (index >= body->count())
+    if (index < 0 || index >= body->count())
       throw InputError(spec.where, "probe.point",
                        "probe '" + spec.name + "': body '" + spec.body + "' has no point " +
                            std::to_string(index) + " (it has " + std::to_string(body->count()) +
