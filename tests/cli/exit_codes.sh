@@ -89,6 +89,7 @@ messages=$(no_room 8 "$work/snapshot" "$cases/two_disks.toml" --set solver.end_t
 expect_output_error "full disk at the first snapshot" $? "$messages" \
   "cannot write $work/snapshot/points_000000.vtu"
 ls "$work/snapshot" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
+grep -qx failed "$work/snapshot/status" || { echo "FAIL: status after an output error: $(cat "$work/snapshot/status")"; failures=$((failures + 1)); }
 # A file system with no room even for the output directory: a tmpfs with no inode left
 # refuses new directories (ENOSPC). Where the system lets a user mount one in a namespace of
 # its own; elsewhere this check is skipped.

@@ -155,17 +155,17 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
                          o.out_dir.empty() ? "output.directory" : "--out");
   // From here a file that cannot be written (a full disk) is an output error (exit 1), not
   // a problem of the input.
-  const auto writer = std::make_unique<OutputWriter<D>>(c.output, *simulation, std::move(probes));
-  OutputWriter<D>& output = *writer;
-  TerminalProgress progress(isatty(STDERR_FILENO));
-  const CheckpointHeader header = checkpoint_header_for(source);
-  const std::string checkpoint_path = c.output.directory + "/checkpoint.h5";
-  RunControl control;
-  control.case_hash = header.case_hash;
-  control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
-  control.checkpoint_interval = c.output.checkpoint_interval;
-  control.stop = catch_stop_signals();
   try {
+    const auto writer = std::make_unique<OutputWriter<D>>(c.output, *simulation, std::move(probes));
+    OutputWriter<D>& output = *writer;
+    TerminalProgress progress(isatty(STDERR_FILENO));
+    const CheckpointHeader header = checkpoint_header_for(source);
+    const std::string checkpoint_path = c.output.directory + "/checkpoint.h5";
+    RunControl control;
+    control.case_hash = header.case_hash;
+    control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
+    control.checkpoint_interval = c.output.checkpoint_interval;
+    control.stop = catch_stop_signals();
     const RunStatistics r =
         run_simulation(*simulation, output, o.quiet ? nullptr : &progress, control);
     if (r.interrupted_by) {
@@ -184,8 +184,11 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   } catch (const NumericalError& e) {
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     std::fprintf(stderr, "pellicle: the history and last snapshot up to the failure are in %s\n",
-                 output.directory().c_str());
+                 c.output.directory.c_str());
     return kExitNumericalFailure;
+  } catch (const std::exception&) {  // an output error: the run cannot go on
+    mark_output_directory_failed(c.output.directory);
+    throw;
   }
 }
 

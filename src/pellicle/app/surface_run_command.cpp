@@ -85,12 +85,12 @@ int run_surface(const CaseSource& source, const RunOptions& o, bool check_only) 
                          o.out_dir.empty() ? "output.directory" : "--out");
   // From here a file that cannot be written (a full disk) is an output error (exit 1), not
   // a problem of the input.
-  const auto writer = std::make_unique<SurfaceOutputWriter<D>>(c.output, *simulation, c.monitors);
-  TerminalProgress progress(isatty(STDERR_FILENO));
-  RunControl control;
-  control.case_hash = hash_text(case_text(source));
-  control.stop = catch_stop_signals();
   try {
+    const auto writer = std::make_unique<SurfaceOutputWriter<D>>(c.output, *simulation, c.monitors);
+    TerminalProgress progress(isatty(STDERR_FILENO));
+    RunControl control;
+    control.case_hash = hash_text(case_text(source));
+    control.stop = catch_stop_signals();
     const RunStatistics r =
         run_simulation(*simulation, *writer, o.quiet ? nullptr : &progress, control);
     if (r.interrupted_by) {
@@ -107,8 +107,11 @@ int run_surface(const CaseSource& source, const RunOptions& o, bool check_only) 
   } catch (const NumericalError& e) {
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     std::fprintf(stderr, "pellicle: the history and last snapshot up to the failure are in %s\n",
-                 writer->directory().c_str());
+                 c.output.directory.c_str());
     return kExitNumericalFailure;
+  } catch (const std::exception&) {  // an output error: the run cannot go on
+    mark_output_directory_failed(c.output.directory);
+    throw;
   }
 }
 

@@ -84,4 +84,11 @@ void mark_output_directory(const std::string& directory, const std::string& stat
   write_file_atomically(directory + "/status", status.substr(0, status.find(':')) + "\n");
 }
 
+void mark_output_directory_failed(const std::string& directory) noexcept {
+  try {
+    mark_output_directory(directory, "failed");
+  } catch (...) {  // the disk that failed the output may refuse this too
+  }
+}
+
 }  // namespace pellicle

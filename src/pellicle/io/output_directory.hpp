@@ -22,4 +22,7 @@ void claim_output_directory(const std::string& directory, bool overwrite,
 //! "interrupted").
 void mark_output_directory(const std::string& directory, const std::string& status);
 
+//! Mark the directory failed after an output error, if the disk still lets us (never throws).
+void mark_output_directory_failed(const std::string& directory) noexcept;
+
 }  // namespace pellicle
