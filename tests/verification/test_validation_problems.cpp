@@ -4,8 +4,10 @@
 //   cylinder-radial  axisymmetric radial modes: reversal times within 1% of the period
 //   two-disks        Sulsky et al. 1994: APIC energy within 2% through the collision
 //   two-bars-stick   IJNME 1999 Fig. 18: the bars stick with the single velocity field
-//   spring-mass      IJNME §3.1.1: period, amplitude; stable at 1.6, unstable at 1.7 Δt_crit
-//   string-slack     IJNME §3.2: free fall, tension and free-flight times within 10%
+//   spring-mass      IJNME §3.1.1: period 1%, amplitude 2%, y(t) within the drift those allow;
+//                    stable at 1.6, unstable at 1.7 Δt_crit
+//   string-slack     IJNME §3.2: free fall, tension and free-flight times within 10%; peak
+//                    strain energy within 5% of the falling mass's, ½ k δ² = m g (s + δ)
 //   pendulum         IJNME §3.1.2: θ(t) against bar elements, error below atan(h/L) (the end
 //                    point misplaced by a cell) and falling with refinement
 //   drum             3D membrane: fundamental period within 3%, error falling with refinement
