@@ -145,6 +145,14 @@ expect 0 "cases/airbag_demo.toml" -- "$pellicle" list cases
 expect 0 "isosurface-hybrid" -- "$pellicle" list estimators
 expect 0 "dogbone" -- "$pellicle" list problems
 expect 0 "points, mass 126.094 kg/m of depth" -- "$pellicle" check "$cases/two_disks.toml"
+# Every case-file key the user guide documents, or one section's; unknown words are refused.
+expect 0 "solver.end_time" -- "$pellicle" list keys
+expect 0 "body.membrane.thickness" -- "$pellicle" list keys body.membrane
+expect 2 "list keys: no key under \"solvr\" in the user guide; sections: case, grid, solver" -- \
+  "$pellicle" list keys solvr
+expect 2 "what: expected cases, problems, estimators, kernels, materials or keys, found 'bogus'" -- \
+  "$pellicle" list bogus
+expect 2 "list cases: takes no further word" -- "$pellicle" list cases solver
 
 # Runs that would never end are refused before they start.
 expect 2 "solver.cfl: the CFL step is 0 s" -- "$pellicle" check "$cases/two_disks.toml" \
@@ -159,7 +167,6 @@ expect 2 "grid.cell: expected at most 1e+07 cells on an axis" -- "$pellicle" che
   "$cases/two_disks.toml" --set 'grid.upper=[2147483648.0, 1.0]' --set grid.cell=1.0
 expect 0 "warning: body 'lower-disk': part of its region lies outside the grid" -- \
   "$pellicle" check "$cases/two_disks.toml" --set 'body[0].region.center=[0.05, 0.5]'
-
 # Thread counts this machine cannot honour; case files that are not files.
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 0
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 100000
