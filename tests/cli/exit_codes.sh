@@ -197,6 +197,14 @@ expect 0 "cases/airbag_demo.toml" -- "$pellicle" list cases
 expect 0 "isosurface-hybrid" -- "$pellicle" list estimators
 expect 0 "dogbone" -- "$pellicle" list problems
 expect 0 "points, mass 126.094 kg/m of depth" -- "$pellicle" check "$cases/two_disks.toml"
+# Every case-file key the user guide documents, or one section's; unknown words are refused.
+expect 0 "solver.end_time" -- "$pellicle" list keys
+expect 0 "body.membrane.thickness" -- "$pellicle" list keys body.membrane
+expect 2 "list keys: no key under \"solvr\" in the user guide; sections: case, grid, solver" -- \
+  "$pellicle" list keys solvr
+expect 2 "what: expected cases, problems, estimators, kernels, materials or keys, found 'bogus'" -- \
+  "$pellicle" list bogus
+expect 2 "list cases: takes no further word" -- "$pellicle" list cases solver
 
 # Runs that would never end are refused before they start.
 expect 2 "solver.cfl: the CFL step is 0 s" -- "$pellicle" check "$cases/two_disks.toml" \
@@ -211,6 +219,22 @@ expect 2 "grid.cell: expected at most 1e+07 cells on an axis" -- "$pellicle" che
   "$cases/two_disks.toml" --set 'grid.upper=[2147483648.0, 1.0]' --set grid.cell=1.0
 expect 0 "warning: body 'lower-disk': part of its region lies outside the grid" -- \
   "$pellicle" check "$cases/two_disks.toml" --set 'body[0].region.center=[0.05, 0.5]'
+# Surface cases too: the cloud is estimated from the shape's area and its spacing before it is
+# sampled, and refused at once (a sphere of radius 10⁶ at h = 10⁻³; the unit sphere at
+# h = 3·10⁻⁴, which fits the indices but no machine's memory). `check` prints the estimate.
+sed -e 's/radius = 1.0 }/radius = 1e6 }/' -e 's/^smoothing_length = 0.1 /smoothing_length = 1e-3/' \
+  "$cases/surface_cdr_sphere.toml" > "$work/huge_sphere.toml"
+expect 2 "huge_sphere.toml:17:20: surface.smoothing_length: the initial cloud would hold about 7.48e+19 points" -- \
+  timeout 2 "$pellicle" check "$work/huge_sphere.toml"
+expect 2 "more than the 2.15e+09 a cloud can index" -- timeout 2 "$pellicle" run --quiet \
+  --out "$work/huge" "$work/huge_sphere.toml"
+[ -e "$work/huge" ] && { echo "FAIL: an oversized surface case created output"; failures=$((failures + 1)); }
+expect 2 "surface.smoothing_length: the problem needs about 3.41e+03 GB" -- \
+  timeout 2 "$pellicle" check "$cases/surface_cdr_sphere.toml" --set surface.smoothing_length=3e-4
+grep -qF "this machine has available" "$work/err" ||
+  { echo "FAIL: the surface memory check does not name the available memory"; failures=$((failures + 1)); }
+expect 0 "(4.0 kB a point; the shape's area gave 7483 points before sampling)" -- \
+  "$pellicle" check "$cases/surface_cdr_sphere.toml"
 
 # Thread counts this machine cannot honour; case files that are not files.
 expect 2 "--threads: expected a whole number from 1 to" -- "$pellicle" run --threads 0

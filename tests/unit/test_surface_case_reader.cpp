@@ -5,6 +5,7 @@
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/builtin_cases.hpp"
 #include "pellicle/io/case.hpp"
+#include "pellicle/io/problem_size.hpp"
 #include "pellicle/io/surface_case.hpp"
 
 namespace pellicle {
@@ -102,6 +103,83 @@ TEST(SurfaceCaseReader, FileAndLineOfTheKey) {
       "smoothing_length = 0.4\nvelocity = [\"0\", \"0\", \"sin(\"]\n[solver]\ndt = 0.1\n"
       "end_time = 1.0\n");
   EXPECT_NE(line.find("surface.toml:4:"), std::string::npos) << line;
+}
+
+// The initial cloud's size, estimated from the shape's length or area before sampling, is
+// within a few per cent of the cloud sampled (boundary points come on top in open shapes).
+TEST(SurfaceCaseReader, CloudSizeIsEstimatedFromTheShape) {
+  const auto compare = [](const std::string& text, const std::vector<std::string>& sets,
+                          const std::string& name) {
+    const auto source = case_source_from_text(text, name, sets);
+    const auto check = [&](const auto& c) {
+      const double estimate = estimate_surface_size(*c.shape, c.spacing).points;
+      const double sampled = static_cast<double>(c.sample.size());
+      EXPECT_NEAR(estimate / sampled, 1.0, 0.08)
+          << name << ": " << c.shape->describe() << ", estimate " << estimate << ", sampled "
+          << sampled;
+    };
+    if (surface_case_dimension(*source) == 2)
+      check(read_surface_case<2>(*source));
+    else
+      check(read_surface_case<3>(*source));
+  };
+  for (const auto& [name, text] : builtin_cases())
+    if (is_surface_case(*case_source_from_text(text, name))) compare(text, {}, name);
+  const std::string h = "surface.smoothing_length=0.1";
+  for (const std::string shape :
+       {"{kind=\"sphere\",center=[0.0,0.0,0.0],radius=1.0,keep=[[0.0,0.6,0.8]]}",
+        "{kind=\"ellipsoid\",center=[0.0,0.0,0.0],semi_axes=[1.0,0.5,0.3]}",
+        "{kind=\"torus\",center=[0.0,0.0,0.0],major_radius=1.0,minor_radius=0.3}",
+        "{kind=\"half-pipe\",side=\"outer\"}",
+        "{kind=\"implicit-blobs\",centers=[[0.0,0.0,0.0],[0.8,0.0,0.0]],radii=[0.6,0.5],"
+        "level=0.5}"})
+    compare(kValid, {"surface.shape=" + shape, h}, "3d.toml");
+  const std::string plane = "surface.velocity=[\"0\",\"0\"]";
+  for (const std::string shape :
+       {"{kind=\"circle\",center=[0.0,0.0],radius=10.0}",
+        "{kind=\"circle\",center=[0.0,0.0],radius=10.0,keep=[[0.0,1.0]]}",
+        "{kind=\"ellipse\",center=[0.0,0.0],semi_axes=[10.0,2.0]}",
+        "{kind=\"implicit-blobs\",centers=[[0.0,0.0],[8.0,0.0]],radii=[6.0,5.0],level=0.5}"})
+    compare(kValid, {"surface.shape=" + shape, plane, h}, "2d.toml");
+}
+
+// A cloud too large for the machine, or for its indices, is refused before it is sampled,
+// at the key that sets its spacing; slender tori and pipes (whose sampling carriers grow
+// with the ratio of their radii) are refused too.
+TEST(SurfaceCaseReader, OversizedCloudsAreRefusedBeforeSampling) {
+  const std::string sphere = R"([surface]
+shape = { kind = "sphere", center = [0.0, 0.0, 0.0], radius = 1e6 }
+smoothing_length = 1e-3
+[solver]
+dt = 0.01
+end_time = 0.1
+)";
+  std::string what = problems_of(sphere);
+  EXPECT_NE(what.find("surface.toml:3:20: surface.smoothing_length: the initial cloud would hold "
+                      "about 7.48e+19 points (area 1.26e+13 at spacing 0.000392), more than the "
+                      "2.15e+09 a cloud can index"),
+            std::string::npos)
+      << what;
+  // Spacings so small that the count overflows a double.
+  what = problems_of(sphere, {"surface.smoothing_length=1e-300"});
+  EXPECT_NE(what.find("--set surface.smoothing_length=1e-300: surface.smoothing_length: the "
+                      "initial cloud would hold about inf points"),
+            std::string::npos)
+      << what;
+  // Below the index limit, above any machine's memory: about 8e8 points, 3 TB.
+  what = problems_of(kValid, {"surface.smoothing_length=3e-4"});
+  EXPECT_NE(what.find("surface.smoothing_length: the problem needs about 3.41e+03 GB (8.31e+08 "
+                      "points: area 12.6 at spacing 0.000118), more than the"),
+            std::string::npos)
+      << what;
+  EXPECT_NE(what.find("this machine has available: raise surface.smoothing_length"),
+            std::string::npos)
+      << what;
+  expect_problem({"surface.shape={kind=\"torus\",center=[0.0,0.0,0.0],major_radius=1.0,"
+                  "minor_radius=1e-9}"},
+                 "surface.shape.minor_radius: expected minor_radius at least major_radius / 1000");
+  expect_problem({"surface.shape={kind=\"half-pipe\",pipe_radius=1e-9}"},
+                 "surface.shape.pipe_radius: expected pipe_radius at least arc_radius / 1000");
 }
 
 }  // namespace

@@ -40,8 +40,9 @@ struct ValidateOptions {
   bool update_docs = false;       //!< write into the source tree's docs/validation instead
 };
 
-//! `pellicle list cases|problems|estimators|kernels|materials`: what can be named.
-int command_list(const std::string& what);
+//! `pellicle list cases|problems|estimators|kernels|materials`: what can be named;
+//! `pellicle list keys [SECTION]`: the case-file keys the user guide documents (under SECTION).
+int command_list(const std::string& what, const std::string& section);
 
 //! Exit code 1 when a check is outside its accepted range.
 int command_validate(const ValidateOptions& options);

@@ -116,11 +116,22 @@ int main(int argc, char** argv) {
                    "Orient every normal away from this point, X,Y[,Z] (overrides --orient)")
       ->delimiter(',');
 
-  std::string list_what;
-  auto* list_cmd = app.add_subcommand("list", "List what a case or command can name");
-  list_cmd->add_option("what", list_what, "cases, problems, estimators, kernels or materials")
+  std::string list_what, list_section;
+  auto* list_cmd = app.add_subcommand(
+      "list", "List what a case or command can name, or the keys a case file can hold");
+  list_cmd->add_option("what", list_what, "cases, problems, estimators, kernels, materials or keys")
       ->required()
-      ->check(CLI::IsMember({"cases", "problems", "estimators", "kernels", "materials"}));
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            for (const char* word :
+                 {"cases", "problems", "estimators", "kernels", "materials", "keys"})
+              if (text == word) return "";
+            return "expected cases, problems, estimators, kernels, materials or keys, found '" +
+                   text + "'";
+          },
+          "WORD"));
+  list_cmd->add_option("section", list_section,
+                       "With keys: only this section's, e.g. solver or body.membrane");
   auto* help_cmd = app.add_subcommand("help", "Print this help");
 
   try {
@@ -136,7 +147,7 @@ int main(int argc, char** argv) {
     if (*bench_cmd) return command_bench(bench);
     if (*validate_cmd) return command_validate(validate);
     if (*normals_cmd) return command_normals(normals);
-    if (*list_cmd) return command_list(list_what);
+    if (*list_cmd) return command_list(list_what, list_section);
     if (*help_cmd) {
       // app.help() would describe the `help` subcommand just parsed; the formatter gives the
       // program's own.

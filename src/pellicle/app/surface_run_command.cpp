@@ -11,6 +11,7 @@
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/output.hpp"
 #include "pellicle/io/output_directory.hpp"
+#include "pellicle/io/problem_size.hpp"
 #include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
 #include "pellicle/io/surface_output.hpp"
@@ -57,6 +58,14 @@ void print_surface_summary(const SurfaceCase<D>& c, const SurfaceSimulation<D>& 
                s.pde() ? s.pde()->describe().c_str() : "none (movement only)");
   std::fprintf(out, "time       end %g, dt %g, about %.0f steps\n", c.settings.end_time,
                c.settings.dt, std::ceil(c.settings.end_time / c.settings.dt - 1e-9));
+  // As for MPM cases: what the run will hold, and what the case alone gave before sampling
+  // (the check that refuses clouds too large for the machine).
+  const SurfaceSize estimate = estimate_surface_size(*c.shape, c.spacing);
+  std::fprintf(out,
+               "memory     about %.1f MB (%.1f kB a point; the shape's %s gave %.0f points "
+               "before sampling)\n",
+               cloud.size() * surface_bytes_per_point<D>() / 1048576.0,
+               surface_bytes_per_point<D>() / 1024.0, D == 2 ? "length" : "area", estimate.points);
   std::fprintf(out, "output     %s\n", c.output.directory.c_str());
   if (fewest < 8)
     std::fprintf(out,

@@ -102,6 +102,20 @@ class EllipsoidShape final : public SurfaceShape<D> {
 
   double surface_error(const Vec<D>& x) const override { return (x - project(x)).norm(); }
 
+  //! Ramanujan's second approximation of the perimeter (relative error below 4·10⁻⁴ at
+  //! any aspect ratio) and Thomsen's of the area (below 1.1 %).
+  double measure() const override {
+    constexpr double pi = std::numbers::pi;
+    if constexpr (D == 2) {
+      const double a = axes_[0], b = axes_[1], h = (a - b) * (a - b) / ((a + b) * (a + b));
+      return pi * (a + b) * (1.0 + 3.0 * h / (10.0 + std::sqrt(4.0 - 3.0 * h)));
+    } else {
+      constexpr double p = 1.6075;
+      const double a = std::pow(axes_[0], p), b = std::pow(axes_[1], p), c = std::pow(axes_[2], p);
+      return 4.0 * pi * std::pow((a * b + a * c + b * c) / 3.0, 1.0 / p);
+    }
+  }
+
   PointSample<D> sample(const SamplingOptions& options) const override {
     return sample_closed<D>(*this, carrier_, options);
   }

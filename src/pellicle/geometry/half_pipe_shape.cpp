@@ -61,6 +61,11 @@ class HalfPipeShape final : public SurfaceShape<3> {
 
   double surface_error(const Vec3& x) const override { return (x - project(x)).norm(); }
 
+  //! ∫∫ ρ (R + ρ cos φ) dθ dφ over θ ∈ [−arc/2, arc/2], φ ∈ [φ0, φ0 + π].
+  double measure() const override {
+    return 2.0 * half_ * rho_ * (pi * radius_ - 2.0 * rho_ * std::sin(phi0_));
+  }
+
   PointSample<3> sample(const SamplingOptions& options) const override {
     SampleRandom random(options.seed);
     // The ends first, then the long edges; each curve's ends are the shared corners.

@@ -64,6 +64,9 @@ class ImplicitBlobs final : public SurfaceShape<D> {
 
   double surface_error(const Vec<D>& x) const override { return (x - project(x)).norm(); }
 
+  //! The marching-simplex carrier's: its pieces are a sixth of a blob wide or less.
+  double measure() const override { return carrier_measure<D>(carrier_); }
+
   PointSample<D> sample(const SamplingOptions& options) const override {
     return sample_closed<D>(*this, carrier_, options);
   }

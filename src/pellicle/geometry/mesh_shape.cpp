@@ -132,6 +132,8 @@ class MeshShape final : public SurfaceShape<3> {
 
   double surface_error(const Vec3& x) const override { return (x - project(x)).norm(); }
 
+  double measure() const override { return carrier_measure<3>(triangles_); }
+
   PointSample<3> sample(const SamplingOptions& options) const override {
     SampleRandom random(options.seed);
     std::vector<Vec3> boundary;

@@ -1,10 +1,27 @@
 #include "pellicle/geometry/shape_support.hpp"
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
 
 namespace pellicle {
+
+template <int D>
+double carrier_measure(const std::vector<Simplex<D>>& carrier) {
+  double sum = 0.0;
+  for (const auto& s : carrier) {
+    if constexpr (D == 2)
+      sum += (s[1] - s[0]).norm();
+    else
+      sum += 0.5 * (s[1] - s[0]).cross(s[2] - s[0]).norm();
+  }
+  return sum;
+}
+
+template double carrier_measure<2>(const std::vector<Simplex<2>>&);
+template double carrier_measure<3>(const std::vector<Simplex<3>>&);
 
 std::vector<Simplex<3>> carrier_of(const SurfaceMesh& mesh) {
   std::vector<Simplex<3>> out;

@@ -11,6 +11,10 @@
 
 namespace pellicle {
 
+//! Total length (D = 2) or area (D = 3) of carrier pieces.
+template <int D>
+double carrier_measure(const std::vector<Simplex<D>>& carrier);
+
 //! The triangles of a mesh as carrier pieces.
 std::vector<Simplex<3>> carrier_of(const SurfaceMesh& mesh);
 

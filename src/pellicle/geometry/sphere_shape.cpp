@@ -27,6 +27,7 @@ class CutSphere final : public SurfaceShape<D> {
   CutSphere(const Vec<D>& center, double radius, std::vector<Vec<D>> keep)
       : center_(center), radius_(radius) {
     for (auto& n : keep) keep_.push_back(n.normalized());
+    fraction_ = kept_fraction();
     if constexpr (D == 3) {
       carrier_ = carrier_of(make_ellipsoid(center, Vec3::Constant(radius), 0.3 * radius));
     } else {
@@ -86,6 +87,10 @@ class CutSphere final : public SurfaceShape<D> {
     return (x - project(x)).norm() / radius_;
   }
 
+  double measure() const override {
+    return fraction_ * (D == 3 ? 4.0 * pi * radius_ * radius_ : 2.0 * pi * radius_);
+  }
+
   PointSample<D> sample(const SamplingOptions& options) const override {
     SampleRandom random(options.seed);
     std::vector<Vec<D>> boundary;
@@ -119,6 +124,26 @@ class CutSphere final : public SurfaceShape<D> {
     for (const auto& n : keep_)
       if (n.dot(x - center_) < -tolerance) return false;
     return true;
+  }
+  //! The share of the whole shape the cuts keep: of evenly spread directions (Fibonacci
+  //! points on the sphere, equal angles on the circle), those on the kept side of every cut.
+  double kept_fraction() const {
+    if (keep_.empty()) return 1.0;
+    const int count = D == 3 ? 20000 : 3600;
+    int kept = 0;
+    for (int k = 0; k < count; ++k) {
+      Vec<D> d;
+      if constexpr (D == 2) {
+        const double t = 2 * pi * (k + 0.5) / count;
+        d = Vec2(std::cos(t), std::sin(t));
+      } else {
+        const double z = 1.0 - 2.0 * (k + 0.5) / count, r = std::sqrt(1.0 - z * z);
+        const double t = k * pi * (3.0 - std::sqrt(5.0));
+        d = Vec3(r * std::cos(t), r * std::sin(t), z);
+      }
+      kept += strictly_inside(center_ + d);
+    }
+    return static_cast<double>(kept) / count;
   }
   bool strictly_inside(const Vec<D>& x) const {
     for (const auto& n : keep_)
@@ -161,6 +186,7 @@ class CutSphere final : public SurfaceShape<D> {
   Vec<D> center_;
   double radius_;
   std::vector<Vec<D>> keep_;
+  double fraction_ = 1.0;  //!< of the whole sphere (circle) the cuts keep
   std::vector<Simplex<D>> carrier_;
 };
 

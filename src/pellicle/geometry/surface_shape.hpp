@@ -52,6 +52,9 @@ class SurfaceShape {
   //! How far x is off the shape. The paper's measure where it defines one (eq 13,
   //! |‖x − c‖² − r²|/r² for spheres; eq 15 for tori), else the distance |x − project(x)|.
   virtual double surface_error(const Vec<D>& x) const = 0;
+  //! Length (D = 2) or area (D = 3) of the shape, within a few per cent: what sizes a cloud
+  //! before it is sampled (io/surface_size.hpp).
+  virtual double measure() const = 0;
   //! Fill the shape with an irregular cloud: no two points closer than options.spacing, no
   //! gap much wider; boundary points placed along the boundary first, flagged.
   virtual PointSample<D> sample(const SamplingOptions& options) const = 0;

@@ -8,12 +8,17 @@
 #include <numbers>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/geometry/shape_support.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
 
 namespace pellicle {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
+//! Largest ratio of a torus's major to minor radius, and of a half pipe's arc to pipe
+//! radius: the carrier the cloud is drawn from has pieces about a third of the tube's radius
+//! wide, so its size grows with the ratio (10³: about 10⁶ triangles, 70 MB).
+constexpr double kSlenderest = 1e3;
 
 //! Whether some direction d has n·d > 0 for every cut n: the cuts leave a part with area.
 template <int D>
@@ -81,6 +86,11 @@ SurfaceShapePtr<D> read_torus(ParameterReader& in, const std::string&) {
     if (minor >= major) {
       in.fail("minor_radius", "expected minor_radius < major_radius");
       minor = 0.5 * major;
+    } else if (major > kSlenderest * minor) {
+      in.fail("minor_radius", "expected minor_radius at least major_radius / " +
+                                  describe_number(kSlenderest) +
+                                  " (a thinner tube is not sampled)");
+      minor = major / kSlenderest;
     }
     return make_torus_shape(c, major, minor);
   } else {
@@ -97,6 +107,10 @@ SurfaceShapePtr<D> read_half_pipe(ParameterReader& in, const std::string&) {
     if (pipe >= arc) {
       in.fail("pipe_radius", "expected pipe_radius < arc_radius");
       pipe = 0.5 * arc;
+    } else if (arc > kSlenderest * pipe) {
+      in.fail("pipe_radius", "expected pipe_radius at least arc_radius / " +
+                                 describe_number(kSlenderest) + " (a thinner pipe is not sampled)");
+      pipe = arc / kSlenderest;
     }
     const std::string side = in.choice("side", {"inner", "outer", "upper"}, "inner");
     return make_half_pipe_shape(pipe, arc, angle * kDegree,

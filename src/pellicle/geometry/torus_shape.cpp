@@ -1,5 +1,6 @@
 // The torus of §3.7.4 and §4.2.3: (c − √(x² + y²))² + z² = a² (eqs 14, 39).
 #include <cmath>
+#include <numbers>
 
 #include "pellicle/geometry/shape_support.hpp"
 #include "pellicle/geometry/surface_shapes.hpp"
@@ -32,6 +33,10 @@ class TorusShape final : public SurfaceShape<3> {
     const Vec3 q = x - center_;
     const double rho = std::hypot(q.x(), q.y());
     return std::abs((major_ - rho) * (major_ - rho) + q.z() * q.z() - minor_ * minor_);
+  }
+
+  double measure() const override {
+    return 4.0 * std::numbers::pi * std::numbers::pi * major_ * minor_;
   }
 
   PointSample<3> sample(const SamplingOptions& options) const override {

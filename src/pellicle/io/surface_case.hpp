@@ -21,6 +21,7 @@ struct SurfaceCase {
   SurfaceShapePtr<D> shape;
   double smoothing_length = 0.0;  //!< h of every initial point
   double spacing = 0.0;           //!< minimum distance of the initial cloud
+  SourceLocation spacing_where;   //!< surface.smoothing_length in the input
   PointSample<D> sample;          //!< the initial cloud
   SurfaceSettings settings;
   std::array<PointFormula, D> velocity;

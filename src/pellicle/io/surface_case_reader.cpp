@@ -2,6 +2,7 @@
 #include <filesystem>
 
 #include "pellicle/io/case_source.hpp"
+#include "pellicle/io/problem_size.hpp"
 #include "pellicle/io/surface_case.hpp"
 #include "pellicle/io/toml_parameters.hpp"
 #include "pellicle/surface/builder.hpp"
@@ -61,6 +62,7 @@ void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) 
   if (auto shape = s->sub_table("shape", true))
     c.shape = make_surface_shape<D>(*shape, base.empty() ? "." : base);
   c.smoothing_length = s->number("smoothing_length", NumberRange::positive());
+  c.spacing_where = s->location("smoothing_length");
   auto& m = c.settings.management;
   auto t = s->sub_table("management", false);
   c.settings.manage = t->flag_or("enabled", true);
@@ -151,6 +153,8 @@ SurfaceCase<D> read_surface_case(const CaseSource& source) {
     read_output(root, c);
   }  // unknown keys are reported as the readers go out of scope
   problems.throw_if_any();
+  // Before the cloud is sampled: a shape far larger than its spacing would not fit.
+  refuse_oversized_surface<D>(*c.shape, c.spacing, c.spacing_where, "surface.smoothing_length");
   c.sample = c.shape->sample({c.spacing, seed});
   return c;
 }

@@ -20,6 +20,8 @@ SourceLocation location_of(const toml::node* node, const std::string& file) {
   return where;
 }
 
+thread_local AskedKeys* recorder = nullptr;
+
 std::string list_options(const std::vector<std::string>& options) {
   std::string s;
   for (std::size_t i = 0; i < options.size(); ++i) {
@@ -66,6 +68,18 @@ std::string describe_node(const toml::node& node) {
   return out.str();
 }
 
+AskedKeys::AskedKeys() : outer_(recorder) {
+  recorder = this;
+}
+
+AskedKeys::~AskedKeys() {
+  recorder = outer_;
+}
+
+void TomlParameters::asked(std::string_view key) const {
+  if (recorder) recorder->keys_.insert(qualified(key));
+}
+
 TomlParameters::TomlParameters(const toml::table& table, std::string path, ProblemList& problems)
     : table_(table), path_(std::move(path)), problems_(problems) {}
 
@@ -96,6 +110,7 @@ void TomlParameters::wrong(const toml::node* node, std::string_view key,
 }
 
 const toml::node* TomlParameters::take(std::string_view key) {
+  asked(key);
   used_.emplace(key);
   return table_.get(key);
 }
@@ -110,6 +125,7 @@ SourceLocation TomlParameters::location(std::string_view key) const {
 }
 
 bool TomlParameters::has(std::string_view key) const {
+  asked(key);
   return table_.contains(key);
 }
 
@@ -204,7 +220,7 @@ std::string TomlParameters::text(std::string_view key) {
 
 std::string TomlParameters::text_or(std::string_view key, std::string_view fallback) {
   if (!has(key)) {
-    used_.emplace(key);
+    used_.emplace(key);  // has() recorded it as asked
     return std::string(fallback);
   }
   return text(key);

@@ -62,6 +62,7 @@ class TomlParameters final : public ParameterReader {
 
  private:
   std::string qualified(std::string_view key) const;
+  void asked(std::string_view key) const;
   void missing(std::string_view key, const std::string& expected);
   void wrong(const toml::node* node, std::string_view key, const std::string& expected);
   bool read_number(const toml::node& node, std::string_view key, NumberRange range, double& out);
@@ -70,6 +71,24 @@ class TomlParameters final : public ParameterReader {
   std::string path_;
   ProblemList& problems_;
   std::set<std::string, std::less<>> used_;
+};
+
+//! Records, while it lives, every key a TomlParameters on this thread is asked for (read,
+//! taken or tested with has()), qualified by its table's path: "body[1].region.radius".
+//! The unit tests read every built-in case under one to check that docs/user-guide.md
+//! documents each key the readers know. Without one, asking costs a thread-local test.
+class AskedKeys {
+ public:
+  AskedKeys();
+  ~AskedKeys();
+  AskedKeys(const AskedKeys&) = delete;
+  AskedKeys& operator=(const AskedKeys&) = delete;
+  const std::set<std::string>& keys() const { return keys_; }
+
+ private:
+  friend class TomlParameters;
+  std::set<std::string> keys_;
+  AskedKeys* outer_;  //!< the recorder this one replaced, restored when it ends
 };
 
 //! "a string \"usl\"", "an integer 3", "an array of 2 elements": what a node holds.
