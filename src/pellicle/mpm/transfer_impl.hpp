@@ -172,7 +172,7 @@ class TransferImpl final : public Transfer<D> {
   //! transfers removed this step, ½ (r_in + r_out) (docs/theory/gas.md):
   //!   r_in  = Σ_i N_i |v_p + C_p (x_i − x_p) − ṽ_i|²   (to_grid; ṽ_i the mapped velocity)
   //!   r_out = Σ_i N_i |v_i|² − |v_p'|² − Σ_d D_dd |C_p' e_d|²   (to_points; v_i updated)
-  //! from weighted sums (Σ N_i = 1, Σ N_i (x_i − x_p) = 0). With the B-splines' C' = B D⁻¹,
+  //! (r_out from weighted sums: Σ N_i = 1, Σ N_i (x_i − x_p) = 0). With the B-splines' C' = B D⁻¹,
   //! r_out = Σ_i N_i |v_i − v_p' − C_p'(x_i − x_p)|² ≥ 0; the gradient form's C' can give
   //! energy back (r_out < 0).
   template <bool Heat>
@@ -197,14 +197,18 @@ class TransferImpl final : public Transfer<D> {
       Vec<D> v_lagrangian = Vec<D>::Zero();
       Vec<D> v_change = Vec<D>::Zero();
       Mat<D> affine = Mat<D>::Zero();
-      // Heat only: Σ N |v_i|², Σ N |ṽ_i|², Σ N ṽ_i dxᵀ and the inertia Σ N dx_d².
-      double s_new = 0.0, s_old = 0.0;
-      Mat<D> b_old = Mat<D>::Zero();
-      Vec<D> inertia = Vec<D>::Zero();
+      // Heat only: r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the
+      // B-splines' is the constant apic_inertia h²).
+      double r_in = 0.0, s_new = 0.0;
+      Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
+      const Vec<D> v_old = points.velocity[p];
+      Mat<D> c_old;
+      if constexpr (Heat) c_old = affine_out[p];
       for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
         const Vec<D>& v_node = grid.velocity[node];
+        const Vec<D>& dv_node = grid.velocity_change[node];
         v_lagrangian += N * v_node;
-        v_change += N * grid.velocity_change[node];
+        v_change += N * dv_node;
         if (apic_update) {
           Vec<D> dx;
           for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
@@ -213,31 +217,21 @@ class TransferImpl final : public Transfer<D> {
           else
             affine += v_node * grad.transpose();
           if constexpr (Heat) {
-            const Vec<D> v_mapped = v_node - grid.velocity_change[node];
+            r_in += N * (v_old + c_old * dx - (v_node - dv_node)).squaredNorm();
             s_new += N * v_node.squaredNorm();
-            s_old += N * v_mapped.squaredNorm();
-            b_old += (N * v_mapped) * dx.transpose();
-            inertia += N * dx.cwiseAbs2();
+            if constexpr (Kernel::apic_inertia == 0.0) inertia += N * dx.cwiseAbs2();
           }
         }
       });
       if constexpr (Heat) {
-        auto affine_energy = [&inertia](const Mat<D>& c) {  // Σ N |C dx|² = Σ_d D_dd |C e_d|²
-          double e = 0.0;
-          for (int d = 0; d < D; ++d) e += inertia[d] * c.col(d).squaredNorm();
-          return e;
-        };
-        const Vec<D>& v_old = points.velocity[p];
-        const Mat<D>& c_old = affine_out[p];
-        const double r_in = s_old - 2.0 * v_old.dot(v_lagrangian - v_change) -
-                            2.0 * c_old.cwiseProduct(b_old).sum() + v_old.squaredNorm() +
-                            affine_energy(c_old);
-        const double r_out = s_new - v_lagrangian.squaredNorm() - affine_energy(affine);
+        double affine_energy = 0.0;  // Σ N |C' dx|² = Σ_d D_dd |C' e_d|²
+        for (int d = 0; d < D; ++d) affine_energy += inertia[d] * affine.col(d).squaredNorm();
+        const double r_out = s_new - v_lagrangian.squaredNorm() - affine_energy;
         heat[p] = 0.5 * (r_in + r_out);
       }
       // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
       Vec<D> x = points.position[p] + dt * v_lagrangian;
-      Vec<D> v = alpha * (points.velocity[p] + v_change) + (1.0 - alpha) * v_lagrangian;
+      Vec<D> v = alpha * (v_old + v_change) + (1.0 - alpha) * v_lagrangian;
       // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
       // it: the mirrored ghosts cancel its normal velocity only to round-off.
       const bool inside = grid.contains(x) || grid.return_to_face(x);
