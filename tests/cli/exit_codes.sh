@@ -219,6 +219,10 @@ expect 2 "grid.cell: expected at most 1e+07 cells on an axis" -- "$pellicle" che
   "$cases/two_disks.toml" --set 'grid.upper=[2147483648.0, 1.0]' --set grid.cell=1.0
 expect 0 "warning: body 'lower-disk': part of its region lies outside the grid" -- \
   "$pellicle" check "$cases/two_disks.toml" --set 'body[0].region.center=[0.05, 0.5]'
+# A membrane is estimated from its length or area and its spacing (or its points) before it
+# is sampled: a drum at spacing 10⁻⁵ (3.8·10¹⁰ points, 58 TB) is refused at once, naming the key.
+expect 2 "body[0].membrane.spacing: about 3.8e+10 points (area 3.8 at spacing 1e-05)" -- \
+  timeout 5 "$pellicle" check "$cases/drum.toml" --set 'body[0].membrane.spacing=1e-5'
 # Surface cases too: the cloud is estimated from the shape's area and its spacing before it is
 # sampled, and refused at once (a sphere of radius 10⁶ at h = 10⁻³; the unit sphere at
 # h = 3·10⁻⁴, which fits the indices but no machine's memory). `check` prints the estimate.

@@ -44,9 +44,11 @@ struct MembraneGeometry {
 };
 
 //! Read and sample a membrane shape. `cell` sets the default spacing; `base_directory` is
-//! where mesh files are looked for. Problems are recorded in the reader.
+//! where mesh files are looked for. Problems are recorded in the reader. A shape whose
+//! length or area at its spacing (or its `points`) would give more than `most_points` points
+//! is refused before it is sampled (the key named, with the estimate).
 template <int D>
 MembraneGeometry<D> make_membrane_geometry(ParameterReader& in, double cell,
-                                           const std::string& base_directory);
+                                           const std::string& base_directory, double most_points);
 
 }  // namespace pellicle

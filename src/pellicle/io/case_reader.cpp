@@ -9,6 +9,7 @@
 #include "pellicle/geometry/region_factory.hpp"
 #include "pellicle/io/case.hpp"
 #include "pellicle/io/case_source.hpp"
+#include "pellicle/io/problem_size.hpp"
 #include "pellicle/io/toml_parameters.hpp"
 #include "pellicle/mpm/boundary/boundary_condition.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
@@ -308,7 +309,8 @@ void read_membrane_or_region(TomlParameters& t, Case<D>& c, BodySpec<D>& b) {
   if (membrane) {
     auto m = t.sub_table("membrane", true);
     const std::string base = std::filesystem::path(c.file).parent_path().string();
-    b.membrane = make_membrane_geometry<D>(*m, c.cell, base.empty() ? "." : base);
+    b.membrane =
+        make_membrane_geometry<D>(*m, c.cell, base.empty() ? "." : base, most_points_in_memory());
     b.thickness = m->number("thickness", NumberRange::positive());
     std::vector<std::string> estimators;
     for (const auto& e : frame_estimators<D>()) estimators.push_back(e.name);

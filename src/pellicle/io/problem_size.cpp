@@ -90,6 +90,11 @@ double available_memory_bytes() {
   return 0.0;
 }
 
+double most_points_in_memory() {
+  const double available = available_memory_bytes();
+  return available > 0.0 ? available / kBytesPerPoint : std::numeric_limits<double>::infinity();
+}
+
 template <int D>
 void refuse_oversized_problem(const Case<D>& c) {
   const ProblemSize size = estimate_problem_size(c);

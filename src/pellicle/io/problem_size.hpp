@@ -24,6 +24,10 @@ ProblemSize estimate_problem_size(const Case<D>& c);
 //! Memory the system could give this process now (MemAvailable), in bytes; 0 if unknown.
 double available_memory_bytes();
 
+//! How many MPM points fit in the available memory (infinity if unknown): the budget a
+//! membrane shape is checked against before it is sampled.
+double most_points_in_memory();
+
 //! Refuse (InputError, exit 2) a case whose estimate exceeds the available memory, naming the
 //! estimate, the memory and the key that drives it (grid.cell, or the largest body's table).
 template <int D>
