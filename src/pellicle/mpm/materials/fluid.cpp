@@ -100,12 +100,14 @@ double Fluid<D, Eos>::max_signal_speed(const Particles<D>& points, long begin, l
 namespace {
 
 //! In-plane measure of a point (2D: its area; axisymmetric: its ring's cross-section, the
-//! volume over 2π r; 3D: its volume).
+//! volume over 2π r; 3D: its volume). Within half a cell of the axis the hoop rate v_r/r, and
+//! with it the volume, is only as good as the grid's v_r there, and V/(2π r) grows without
+//! bound as r → 0: there the volume is measured against the innermost cells' ring, 2π (h/2).
 template <int D>
-double in_plane_measure(const Particles<D>& points, long p, bool axisymmetric) {
+double in_plane_measure(const Particles<D>& points, long p, bool axisymmetric, double cell) {
   if (!axisymmetric) return points.volume[p];
-  const double r = points.position[p][0];
-  return r > 0.0 ? points.volume[p] / (2.0 * std::numbers::pi * r) : points.volume[p];
+  const double r = std::max(points.position[p][0], 0.5 * cell);
+  return points.volume[p] / (2.0 * std::numbers::pi * r);
 }
 
 //! Upper bound (Gershgorin) of the largest principal value of the in-plane strain: the
@@ -145,7 +147,7 @@ typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>&
   for (long p = begin; p < end; ++p) {
     const double e = energy[p];
     if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);
-    const double measure = in_plane_measure(points, p, axisymmetric);
+    const double measure = in_plane_measure(points, p, axisymmetric, cell);
     most = std::max(most, measure);
     widest = std::max(widest, spacing_power(p, measure));
   }
@@ -154,13 +156,14 @@ typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>&
   check.spacing = std::pow(widest / cell_measure, 1.0 / D);
   if (widest > cell_measure)  // rare: find the point (the reduction keeps only the value)
     for (long p = begin; p < end && check.thinnest < 0; ++p)
-      if (spacing_power(p, in_plane_measure(points, p, axisymmetric)) == widest) check.thinnest = p;
+      if (spacing_power(p, in_plane_measure(points, p, axisymmetric, cell)) == widest)
+        check.thinnest = p;
   if (first < end) {
     check.invalid = first;
     check.why = "non-finite or negative specific internal energy";
   } else if (most_cells > kMostCellsPerPoint) {
     for (long p = begin; p < end && check.invalid < 0; ++p)
-      if (in_plane_measure(points, p, axisymmetric) == most) check.invalid = p;
+      if (in_plane_measure(points, p, axisymmetric, cell) == most) check.invalid = p;
     char text[200];
     std::snprintf(text, sizeof text,
                   "the gas has expanded into vacuum beyond what its points represent: the point "
