@@ -73,7 +73,8 @@ SurfaceOutputWriter<D>::SurfaceOutputWriter(
   if (ec) throw std::runtime_error("cannot create " + settings_.directory + ": " + ec.message());
   history_.open(settings_.directory + "/history.csv", std::ios::trunc);
   if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
-  history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual,area";
+  history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual,area,"
+              "enclosed_volume";
   if (s.pde()) history_ << ",total_phi";
   if (s.pde() && s.pde()->exact()) history_ << ",error_l2,error_max";
   for (const auto& [name, formula] : monitors_) history_ << ",mean_" << name;
@@ -90,7 +91,7 @@ void SurfaceOutputWriter<D>::write_row(const SurfaceSimulation<D>& s) {
            << s.last_solve().residual;
   const std::vector<double>* phi = s.pde() ? &s.cloud().field(s.pde()->unknown()) : nullptr;
   const SurfaceIntegrals totals = integrate(s.cloud(), s.neighbours(), phi, areas_);
-  history_ << ',' << totals.area;
+  history_ << ',' << totals.area << ',' << totals.enclosed;
   if (phi) history_ << ',' << totals.integral;
   if (s.pde() && s.pde()->exact()) {
     const SolutionErrors e = solution_errors(s);

@@ -35,6 +35,7 @@ SurfaceIntegrals integrate(const PointCloud<D>& cloud, const NeighbourLists& nei
   SurfaceIntegrals out;
   for (std::size_t i = 0; i < areas.size(); ++i) {
     out.area += areas[i];
+    out.enclosed += areas[i] * cloud.position[i].dot(cloud.normal(i)) / D;
     if (u) out.integral += areas[i] * (*u)[i];
   }
   return out;

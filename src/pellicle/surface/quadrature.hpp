@@ -20,9 +20,12 @@ void point_areas(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
 struct SurfaceIntegrals {
   double area = 0.0;      //!< Σ_i A_i
   double integral = 0.0;  //!< Σ_i A_i u_i (0 without u)
+  //! The volume (2D: area) a closed surface encloses, by the divergence theorem
+  //! V = (1/D) ∮ x · n dA ≈ (1/D) Σ_i A_i x_i · n_i (outward normals; meaningless when open).
+  double enclosed = 0.0;
 };
 
-//! The area and, with `u`, ∫ u dA (`areas` is scratch for the A_i).
+//! The area, the enclosed volume and, with `u`, ∫ u dA (`areas` is scratch for the A_i).
 template <int D>
 SurfaceIntegrals integrate(const PointCloud<D>& cloud, const NeighbourLists& neighbours,
                            const std::vector<double>* u, std::vector<double>& areas);
