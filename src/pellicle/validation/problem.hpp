@@ -72,6 +72,7 @@ Outcome ball_and_net(Resolution resolution);
 Outcome dogbone(Resolution resolution);
 Outcome airbag(Resolution resolution);
 Outcome surface_cdr_sphere(Resolution resolution);
+Outcome surface_curvature_flow(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
 Outcome surface_half_pipe(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);

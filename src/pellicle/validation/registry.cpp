@@ -61,6 +61,8 @@ const std::vector<Problem>& problems() {
       {"surface-point-addition",
        "Curvature-corrected addition of points on a sphere and a torus (Table 1, Figure 11)",
        "Suchde & Kuhnert §3.4.1, §3.7.4", &surface_point_addition},
+      {"curvature-flow", "Mean-curvature flow of a sphere: R(t)² = R0² − 2t",
+       "Suchde & Kuhnert §4.2.3", &surface_curvature_flow},
       {"surface-cdr-sphere", "Convection-diffusion-reaction on an expanding sphere: Tables 2 and 3",
        "Suchde & Kuhnert §4.2.1", &surface_cdr_sphere},
       {"surface-wave-sphere", "Wave equation on an expanding sphere: Table 4",
