@@ -26,5 +26,8 @@ bool PointFormula::reads_phi() const {
 bool PointFormula::reads_curvature() const {
   return expression_.uses(kKappa) || expression_.uses(kKappaMean);
 }
+bool PointFormula::reads_mean_curvature() const {
+  return expression_.uses(kKappaMean);
+}
 
 }  // namespace pellicle

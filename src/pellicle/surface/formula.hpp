@@ -31,6 +31,7 @@ class PointFormula {
   double operator()(const PointValues& v) const;
   bool reads_phi() const;
   bool reads_curvature() const;
+  bool reads_mean_curvature() const;  //!< kappa_mean
   bool empty() const { return expression_.empty(); }
   const std::string& text() const { return expression_.text(); }
   static const std::vector<std::string>& variables();

@@ -107,6 +107,9 @@ class SurfaceSimulation {
   SurfaceStencils<D> stencils_;
   SparseSystem system_;
   std::vector<double> curvature_, divergence_;
+  std::vector<double> areas_;              //!< one-ring areas, for κ̄
+  std::vector<double> smoothing_weights_;  //!< eq 41, normalised, per neighbour
+  std::vector<double> smoothed_;           //!< scratch of the eq 40 passes
   std::vector<Vec<D>> next_velocity_;
   std::vector<Vec<D>> managed_at_;  //!< positions when management last ran
   long managed_generation_ = -1;
