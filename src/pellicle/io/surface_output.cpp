@@ -11,6 +11,7 @@
 #include "pellicle/io/json_text.hpp"
 #include "pellicle/io/output_directory.hpp"
 #include "pellicle/io/vtk_arrays.hpp"
+#include "pellicle/surface/components.hpp"
 #include "pellicle/surface/errors.hpp"
 #include "pellicle/surface/quadrature.hpp"
 
@@ -74,7 +75,7 @@ SurfaceOutputWriter<D>::SurfaceOutputWriter(
   history_.open(settings_.directory + "/history.csv", std::ios::trunc);
   if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
   history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual,area,"
-              "enclosed_volume";
+              "enclosed_volume,parts";
   if (s.pde()) history_ << ",total_phi";
   if (s.pde() && s.pde()->exact()) history_ << ",error_l2,error_max";
   for (const auto& [name, formula] : monitors_) history_ << ",mean_" << name;
@@ -91,7 +92,8 @@ void SurfaceOutputWriter<D>::write_row(const SurfaceSimulation<D>& s) {
            << s.last_solve().residual;
   const std::vector<double>* phi = s.pde() ? &s.cloud().field(s.pde()->unknown()) : nullptr;
   const SurfaceIntegrals totals = integrate(s.cloud(), s.neighbours(), phi, areas_);
-  history_ << ',' << totals.area << ',' << totals.enclosed;
+  history_ << ',' << totals.area << ',' << totals.enclosed << ','
+           << connected_parts(s.neighbours());
   if (phi) history_ << ',' << totals.integral;
   if (s.pde() && s.pde()->exact()) {
     const SolutionErrors e = solution_errors(s);

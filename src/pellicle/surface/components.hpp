@@ -1,0 +1,13 @@
+#pragma once
+//! The connected parts of a point cloud: points are linked when one lies in the other's
+//! neighbourhood S_i (within h). A closed surface is one part; a neck that pinches off, or
+//! two surfaces apart, make two (Suchde & Kuhnert §3.6 counts such parts as chambers).
+
+#include "pellicle/surface/neighbours.hpp"
+
+namespace pellicle {
+
+//! How many connected parts the neighbour graph has (0 for an empty cloud).
+int connected_parts(const NeighbourLists& neighbours);
+
+}  // namespace pellicle
