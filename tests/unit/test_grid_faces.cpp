@@ -60,7 +60,9 @@ TEST(GridFaces, VelocitiesOnTheFaceAndItsGhosts) {
       EXPECT_EQ(g.velocity[i], expected)
           << "condition " << static_cast<int>(c) << ", node at (" << x.x() << ", " << x.y() << ")";
     }
-    if (c != FaceCondition::free) EXPECT_GT(ghosts, 0);
+    if (c != FaceCondition::free) {
+      EXPECT_GT(ghosts, 0);
+    }
   }
 }
 
@@ -90,7 +92,9 @@ TEST(GridFaces, WhatLandsOnGhostsFoldsIntoTheirImages) {
         ++folded;
       }
     }
-    if (c != FaceCondition::free) EXPECT_GT(folded, 0);
+    if (c != FaceCondition::free) {
+      EXPECT_GT(folded, 0);
+    }
   }
 }
 
