@@ -42,7 +42,7 @@ struct SurfaceSettings {
   //! Points with fewer neighbours within h take this many nearest ones (neighbours.hpp):
   //! 10 on surfaces, 5 on curves (monomials to fit: 6 and 3).
   int minimum_neighbours = 0;
-  //! Smooth κ with eq 40 before formulas read it (the paper needs it for curvature flows).
+  //! Smooth κ with eq 40, twice, before formulas read it (curvature flows need it).
   bool smooth_curvature = true;
 };
 
