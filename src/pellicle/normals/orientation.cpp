@@ -1,10 +1,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-#include <deque>
 
 #include "pellicle/normals/cell_groups.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
+#include "pellicle/pointcloud/orientation_sweep.hpp"
 
 namespace pellicle {
 
@@ -17,35 +17,23 @@ template <int D>
 void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::vector<bool>& fixed,
                std::vector<Vec<D>>& normal, double cell) {
   const CellGroups<D> groups(x, begin, end, Vec<D>::Zero(), cell);
-  std::vector<char> visited(end - begin, 0);
-  std::deque<long> queue;
-  auto spread = [&] {
-    while (!queue.empty()) {
-      const long p = queue.front();
-      queue.pop_front();
-      IVec<D> c;
-      for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
-      groups.for_each_around(c, [&](int g) {
-        for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
-          if (visited[*q - begin]) continue;
-          if ((x[*q] - x[p]).squaredNorm() > cell * cell) continue;
-          if (normal[*q].dot(normal[p]) < 0.0) normal[*q] = -normal[*q];
-          visited[*q - begin] = 1;
-          queue.push_back(*q);
-        }
-      });
-    }
-  };
-  // Points whose side is settled go first: their neighbours follow them.
+  std::vector<long> settled;  // their neighbours follow them first
   for (long p = begin; p < end; ++p)
-    if (fixed[p - begin]) visited[p - begin] = 1, queue.push_back(p);
-  spread();
-  for (long start = begin; start < end; ++start) {
-    if (visited[start - begin]) continue;
-    visited[start - begin] = 1;
-    queue.push_back(start);
-    spread();
-  }
+    if (fixed[p - begin]) settled.push_back(p);
+  auto within_a_cell = [&](long p, auto&& visit) {
+    IVec<D> c;
+    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
+    groups.for_each_around(c, [&](int g) {
+      for (const long* q = groups.begin(g); q != groups.end(g); ++q)
+        if ((x[*q] - x[p]).squaredNorm() <= cell * cell) visit(*q);
+    });
+  };
+  orientation_sweep(
+      begin, end, settled, within_a_cell,
+      [&](long from, long to) {
+        if (normal[to].dot(normal[from]) < 0.0) normal[to] = -normal[to];
+      },
+      [](const std::vector<long>&) {});
 }
 
 }  // namespace

@@ -1,10 +1,10 @@
 #include "pellicle/surface/frames.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <deque>
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/loop_failure.hpp"
+#include "pellicle/pointcloud/orientation_sweep.hpp"
 
 namespace pellicle {
 
@@ -155,39 +155,26 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
 template <int D>
 void orient_consistently(PointCloud<D>& cloud, const NeighbourLists& nb,
                          const std::vector<Vec<D>>* reference) {
-  const std::size_t n = cloud.size();
-  std::vector<std::uint8_t> seen(n, 0);
-  std::deque<int> queue;
-  std::vector<int> piece;
-  for (std::size_t seed = 0; seed < n; ++seed) {
-    if (seen[seed]) continue;
-    piece.clear();
-    seen[seed] = 1;
-    queue.push_back(static_cast<int>(seed));
-    while (!queue.empty()) {
-      const int i = queue.front();
-      queue.pop_front();
-      piece.push_back(i);
-      const Vec<D> ni = cloud.normal(i);
-      for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) {
-        const int j = nb.index[k];
-        if (seen[j]) continue;
-        seen[j] = 1;
-        if (cloud.normal(j).dot(ni) < 0.0) flip_normal<D>(cloud.frame[j]);
-        queue.push_back(j);
-      }
-    }
-    // One sign for the whole piece: along the reference normals, else outward.
-    double agreement = 0.0;
-    Vec<D> centroid = Vec<D>::Zero();
-    for (int i : piece) centroid += cloud.position[i];
-    centroid /= static_cast<double>(piece.size());
-    for (int i : piece)
-      agreement += reference ? cloud.normal(i).dot((*reference)[i])
-                             : cloud.normal(i).dot(cloud.position[i] - centroid);
-    if (agreement < 0.0)
-      for (int i : piece) flip_normal<D>(cloud.frame[i]);
-  }
+  orientation_sweep(
+      0, static_cast<long>(cloud.size()), {},
+      [&](long i, auto&& visit) {
+        for (long k = nb.begin(i) + 1; k < nb.end(i); ++k) visit(nb.index[k]);
+      },
+      [&](long from, long to) {
+        if (cloud.normal(to).dot(cloud.normal(from)) < 0.0) flip_normal<D>(cloud.frame[to]);
+      },
+      [&](const std::vector<long>& piece) {
+        // One sign for the whole piece: along the reference normals, else outward.
+        double agreement = 0.0;
+        Vec<D> centroid = Vec<D>::Zero();
+        for (long i : piece) centroid += cloud.position[i];
+        centroid /= static_cast<double>(piece.size());
+        for (long i : piece)
+          agreement += reference ? cloud.normal(i).dot((*reference)[i])
+                                 : cloud.normal(i).dot(cloud.position[i] - centroid);
+        if (agreement < 0.0)
+          for (long i : piece) flip_normal<D>(cloud.frame[i]);
+      });
 }
 
 template void set_normal<2>(Mat<2>&, const Vec2&);
