@@ -13,12 +13,13 @@
 #include <numbers>
 #include <random>
 
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/management.hpp"
 #include "pellicle/surface/mls_interpolation.hpp"
-#include "pellicle/surface/neighbours.hpp"
 #include "pellicle/surface/one_ring.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 #include "support/test_clouds.hpp"
 
 namespace pellicle {

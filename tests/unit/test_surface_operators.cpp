@@ -10,10 +10,11 @@
 #include <random>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/frames.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/movement.hpp"
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 #include "pellicle/surface/quadrature.hpp"
 #include "pellicle/surface/sparse_system.hpp"
 #include "pellicle/surface/spectrum.hpp"

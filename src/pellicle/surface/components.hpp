@@ -3,7 +3,7 @@
 //! neighbourhood S_i (within h). A closed surface is one part; a neck that pinches off, or
 //! two surfaces apart, make two (Suchde & Kuhnert §3.6 counts such parts as chambers).
 
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/pointcloud/neighbour_search.hpp"
 
 namespace pellicle {
 

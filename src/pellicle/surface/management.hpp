@@ -6,8 +6,9 @@
 //! points by a second-order moving least-squares fit. Every choice the paper leaves open is
 //! written down in docs/theory/surface-management.md.
 
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/frames.hpp"
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
 

@@ -8,8 +8,9 @@
 
 #include <vector>
 
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/local_fit.hpp"
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
 

@@ -10,8 +10,9 @@
 
 #include <limits>
 
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/local_fit.hpp"
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
 

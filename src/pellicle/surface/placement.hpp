@@ -6,8 +6,9 @@
 
 #include <vector>
 
+#include "pellicle/pointcloud/neighbour_search.hpp"
 #include "pellicle/surface/frames.hpp"
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pellicle/core/types.hpp"
+#include "pellicle/pointcloud/point_set.hpp"
 
 namespace pellicle {
 
@@ -52,6 +53,8 @@ class PointCloud {
   //! Increases whenever points are added or removed: neighbour searches and stencils built
   //! for another generation are stale.
   long generation() const { return generation_; }
+  //! The view the point-cloud algorithms read (neighbour search).
+  operator PointSet<D>() const { return {position, smoothing_length, generation_}; }
 
  private:
   std::vector<std::string> field_names_;

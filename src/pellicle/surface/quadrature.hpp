@@ -8,7 +8,8 @@
 
 #include <vector>
 
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/pointcloud/neighbour_search.hpp"
+#include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
 

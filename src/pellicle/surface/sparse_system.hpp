@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/pointcloud/neighbour_search.hpp"
 
 namespace pellicle {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "pellicle/surface/point_cloud.hpp"
+#include "pellicle/pointcloud/point_set.hpp"
 
 namespace pellicle {
 
@@ -37,17 +37,17 @@ class NeighbourSearch {
   //! region not yet refilled) takes its `minimum` nearest points instead, so that its
   //! stencil still has points enough for a quadratic fit (gfdm.hpp widens its weight to
   //! match).
-  void find(const PointCloud<D>& cloud, NeighbourLists& lists, double radius_factor = 1.0,
+  void find(const PointSet<D>& cloud, NeighbourLists& lists, double radius_factor = 1.0,
             int minimum = 0);
   //! Points of `cloud` within `radius` of `x` (any place, not only cloud points), for the
   //! cloud as the last `find` saw it (same points, positions since then unchanged). Safe to
   //! call from several threads at once.
-  void around(const PointCloud<D>& cloud, const Vec<D>& x, double radius,
+  void around(const PointSet<D>& cloud, const Vec<D>& x, double radius,
               std::vector<int>& found) const;
   long rebuilds() const { return rebuilds_; }
 
  private:
-  void refresh(const PointCloud<D>& cloud);
+  void refresh(const PointSet<D>& cloud);
   struct Tree;
   std::unique_ptr<Tree> tree_;
   double rebuild_fraction_;

@@ -1,4 +1,4 @@
-#include "pellicle/surface/neighbours.hpp"
+#include "pellicle/pointcloud/neighbour_search.hpp"
 
 #include <omp.h>
 
@@ -56,9 +56,9 @@ template <int D>
 NeighbourSearch<D>::~NeighbourSearch() = default;
 
 template <int D>
-void NeighbourSearch<D>::refresh(const PointCloud<D>& cloud) {
+void NeighbourSearch<D>::refresh(const PointSet<D>& cloud) {
   const std::size_t n = cloud.size();
-  bool rebuild = !tree_ || generation_ != cloud.generation() || tree_->snapshot.x.size() != n;
+  bool rebuild = !tree_ || generation_ != cloud.generation || tree_->snapshot.x.size() != n;
   if (!rebuild) {
     double drift = 0.0, h_min = 1e300;
 #pragma omp parallel for reduction(max : drift) reduction(min : h_min)
@@ -72,15 +72,15 @@ void NeighbourSearch<D>::refresh(const PointCloud<D>& cloud) {
   if (rebuild) {
     if (!tree_) tree_ = std::make_unique<Tree>();
     tree_->build(cloud.position);
-    generation_ = cloud.generation();
+    generation_ = cloud.generation;
     drift_ = 0.0;
     ++rebuilds_;
   }
 }
 
 template <int D>
-void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
-                              double radius_factor, int minimum) {
+void NeighbourSearch<D>::find(const PointSet<D>& cloud, NeighbourLists& lists, double radius_factor,
+                              int minimum) {
   refresh(cloud);
   const std::size_t n = cloud.size();
   lists.offset.assign(n + 1, 0);
@@ -127,7 +127,7 @@ void NeighbourSearch<D>::find(const PointCloud<D>& cloud, NeighbourLists& lists,
 }
 
 template <int D>
-void NeighbourSearch<D>::around(const PointCloud<D>& cloud, const Vec<D>& x, double radius,
+void NeighbourSearch<D>::around(const PointSet<D>& cloud, const Vec<D>& x, double radius,
                                 std::vector<int>& out) const {
   thread_local std::vector<std::pair<unsigned, double>> matches;
   tree_->query(x, radius + drift_, matches);
