@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "pellicle/validation/riemann.hpp"
 #include "pellicle/mpm/materials/fluid.hpp"
+#include "pellicle/validation/riemann.hpp"
 
 namespace pellicle {
 namespace {

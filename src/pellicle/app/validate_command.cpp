@@ -8,9 +8,9 @@
 #include <fstream>
 
 #include "pellicle/app/commands.hpp"
-#include "pellicle/validation/problem.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/atomic_file.hpp"
+#include "pellicle/validation/problem.hpp"
 
 namespace pellicle {
 
