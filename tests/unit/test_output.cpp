@@ -13,11 +13,15 @@
 #include "pellicle/io/vtk_writer.hpp"
 #include "pellicle/mpm/grid_projection.hpp"
 #include "support/case_text.hpp"
+#include "support/vtk_files.hpp"
 
 namespace pellicle {
 namespace {
 
 namespace fs = std::filesystem;
+using test::base64_decode;
+using test::decoded_array;
+using test::read_all;
 
 const std::string kCase = R"(
 [grid]
@@ -44,41 +48,6 @@ points_per_cell = 1
 velocity = [0.5, 0.0]
 region = { shape = "box", lower = [0.25, 0.25], upper = [0.75, 0.5] }
 )";
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<unsigned char> base64_decode(const std::string& text) {
-  std::vector<unsigned char> out;
-  unsigned buffer = 0;
-  int bits = 0;
-  for (char c : text) {
-    int v;
-    if (c >= 'A' && c <= 'Z')
-      v = c - 'A';
-    else if (c >= 'a' && c <= 'z')
-      v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9')
-      v = c - '0' + 52;
-    else if (c == '+')
-      v = 62;
-    else if (c == '/')
-      v = 63;
-    else
-      continue;
-    buffer = (buffer << 6) | v;
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out.push_back(static_cast<unsigned char>((buffer >> bits) & 0xff));
-    }
-  }
-  return out;
-}
 
 TEST(Output, ARunThatReachesMaxStepsStopsAndSaysSo) {
   // 10 steps to the end; at most 4. (pellicle run refuses this before it starts; a time
@@ -154,28 +123,6 @@ TEST(Output, RunWritesCompleteFiles) {
   EXPECT_NE(summary.find("\"status\": \"completed\""), std::string::npos);
   EXPECT_NE(summary.find("\"steps\": 10"), std::string::npos) << summary;
   fs::remove_all(dir);
-}
-
-//! A DataArray of a VTK XML text: its NumberOfComponents and its values (the byte count in
-//! the UInt64 header must match them).
-template <class T>
-std::vector<T> decoded_array(const std::string& xml, const std::string& name, int& components) {
-  const auto at = xml.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no array " << name;
-    return {};
-  }
-  const auto tag_end = xml.find('>', at);
-  const auto key = xml.find("NumberOfComponents=\"", at);
-  components = std::stoi(xml.substr(key + std::strlen("NumberOfComponents=\"")));
-  const auto end = xml.find("</DataArray>", tag_end);
-  const auto bytes = base64_decode(xml.substr(tag_end + 1, end - tag_end - 1));
-  std::uint64_t count;
-  std::memcpy(&count, bytes.data(), 8);
-  EXPECT_EQ(count + 8, bytes.size()) << name;
-  std::vector<T> values(count / sizeof(T));
-  std::memcpy(values.data(), bytes.data() + 8, count);
-  return values;
 }
 
 TEST(Output, GridSnapshotHoldsProjectedStresses) {

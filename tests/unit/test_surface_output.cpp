@@ -26,11 +26,14 @@
 #include "pellicle/io/toml_parameters.hpp"
 #include "pellicle/surface/pde.hpp"
 #include "pellicle/surface/simulation.hpp"
+#include "support/vtk_files.hpp"
 
 namespace pellicle {
 namespace {
 
 namespace fs = std::filesystem;
+using test::decoded_array;
+using test::read_all;
 
 constexpr int kPoints = 64;
 constexpr double kH = 0.3;
@@ -66,59 +69,11 @@ std::unique_ptr<SurfaceSimulation<2>> circle() {
       make_pde("advection-diffusion", "initial = \"1 + x\"\nexact = \"1 + x\"\n"), &outward);
 }
 
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
   std::stringstream in(line);
   for (std::string f; std::getline(in, f, ',');) out.push_back(f);
   return out;
-}
-
-std::vector<unsigned char> base64_decode(const std::string& text) {
-  static const std::string alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::vector<unsigned char> out;
-  unsigned buffer = 0;
-  int bits = 0;
-  for (char c : text) {
-    const auto v = alphabet.find(c);
-    if (v == std::string::npos) continue;  // padding, line breaks
-    buffer = (buffer << 6) | static_cast<unsigned>(v);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out.push_back(static_cast<unsigned char>((buffer >> bits) & 0xff));
-    }
-  }
-  return out;
-}
-
-//! The values of the DataArray `name` of a VTK XML text and its NumberOfComponents; the
-//! UInt64 byte count in front of the values must match them.
-template <class T>
-std::vector<T> decoded_array(const std::string& xml, const std::string& name, int& components) {
-  const auto at = xml.find("Name=\"" + name + "\"");
-  if (at == std::string::npos) {
-    ADD_FAILURE() << "no array " << name;
-    return {};
-  }
-  const auto tag_end = xml.find('>', at);
-  const auto key = xml.find("NumberOfComponents=\"", at);
-  components = std::stoi(xml.substr(key + std::strlen("NumberOfComponents=\"")));
-  const auto end = xml.find("</DataArray>", tag_end);
-  const auto bytes = base64_decode(xml.substr(tag_end + 1, end - tag_end - 1));
-  std::uint64_t count = 0;
-  std::memcpy(&count, bytes.data(), 8);
-  EXPECT_EQ(count + 8, bytes.size()) << name;
-  std::vector<T> values(count / sizeof(T));
-  std::memcpy(values.data(), bytes.data() + 8, count);
-  return values;
 }
 
 void expect_no_temporary_files(const fs::path& dir) {
