@@ -112,11 +112,11 @@ TEST(SurfaceCaseReader, CloudSizeIsEstimatedFromTheShape) {
                           const std::string& name) {
     const auto source = case_source_from_text(text, name, sets);
     const auto check = [&](const auto& c) {
-      const double estimate = estimate_surface_size(*c.shape, c.spacing).points;
+      const double estimate = estimate_surface_size(c.shapes(), c.spacing).points;
       const double sampled = static_cast<double>(c.sample.size());
       EXPECT_NEAR(estimate / sampled, 1.0, 0.08)
-          << name << ": " << c.shape->describe() << ", estimate " << estimate << ", sampled "
-          << sampled;
+          << name << ": " << c.surfaces[0].shape->describe() << ", estimate " << estimate
+          << ", sampled " << sampled;
     };
     if (surface_case_dimension(*source) == 2)
       check(read_surface_case<2>(*source));

@@ -109,7 +109,8 @@ TEST_F(SurfaceOutput, HistorySeriesAndSummaryOfAShortRun) {
   std::getline(history, header);
   EXPECT_EQ(header,
             "time,step,points,added,merged,removed,solver_iterations,solver_residual,area,"
-            "enclosed_volume,parts,total_phi,error_l2,error_max,mean_r2");
+            "enclosed_volume,parts,chambers,contact_points,contact_removed,total_phi,error_l2,"
+            "error_max,mean_r2");
   std::vector<std::vector<std::string>> rows;
   for (std::string row; std::getline(history, row);) rows.push_back(split(row));
   ASSERT_EQ(rows.size(), 3u);  // t = 0 and each of the two steps (history_interval 0)
@@ -126,10 +127,11 @@ TEST_F(SurfaceOutput, HistorySeriesAndSummaryOfAShortRun) {
     // enclosed: ½ Σ A_i x_i · n_i, with x · n = 1 on the unit circle
     EXPECT_NEAR(std::stod(f[9]), 0.5 * perimeter, 1e-10);
     EXPECT_EQ(f[10], "1");                            // parts: one closed curve
-    EXPECT_NEAR(std::stod(f[11]), perimeter, 1e-10);  // total_phi
-    EXPECT_LT(std::abs(std::stod(f[12])), 1e-8);      // error_l2
-    EXPECT_LT(std::abs(std::stod(f[13])), 1e-8);      // error_max
-    EXPECT_NEAR(std::stod(f[14]), 1.0, 1e-12);        // mean_r2
+    EXPECT_EQ(f[11] + f[12] + f[13], "100");          // one chamber, no contact
+    EXPECT_NEAR(std::stod(f[14]), perimeter, 1e-10);  // total_phi
+    EXPECT_LT(std::abs(std::stod(f[15])), 1e-8);      // error_l2
+    EXPECT_LT(std::abs(std::stod(f[16])), 1e-8);      // error_max
+    EXPECT_NEAR(std::stod(f[17]), 1.0, 1e-12);        // mean_r2
   }
   EXPECT_EQ(rows[0][6] + rows[0][7], "00");  // no solve before the first step
 

@@ -521,10 +521,10 @@ TEST_F(SurfaceShapeFiles, ShapesReadFromTables) {
   ASSERT_TRUE(torus) << p4;
   EXPECT_EQ(p4, "");
   EXPECT_EQ(surface_shape_kinds<2>(),
-            (std::vector<std::string>{"circle", "ellipse", "implicit-blobs"}));
+            (std::vector<std::string>{"circle", "ellipse", "implicit-blobs", "dumbbell"}));
   EXPECT_EQ(surface_shape_kinds<3>(),
             (std::vector<std::string>{"sphere", "ellipsoid", "torus", "half-pipe", "implicit-blobs",
-                                      "mesh"}));
+                                      "mesh", "dumbbell"}));
 }
 
 TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
@@ -532,7 +532,8 @@ TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
   EXPECT_FALSE(unknown);
   EXPECT_EQ(p1,
             "shape.toml:1:8: surface.shape.kind: expected one of \"sphere\", \"ellipsoid\", "
-            "\"torus\", \"half-pipe\", \"implicit-blobs\" or \"mesh\", found the string "
+            "\"torus\", \"half-pipe\", \"implicit-blobs\", \"mesh\" or \"dumbbell\", found the "
+            "string "
             "\"spheroid\"\n");
   auto [circle3, p2] = read<3>("kind = \"circle\"\n");  // a 2D kind in 3D
   EXPECT_FALSE(circle3);

@@ -31,6 +31,8 @@ std::string normalised(const std::string& asked) {
     i = asked.find(']', i);
   }
   for (std::size_t at; (at = key.find("region.parts.")) != std::string::npos;) key.erase(at + 6, 6);
+  // An entry of [[surface.shapes]] is a shape table.
+  if (key.rfind("surface.shapes.", 0) == 0) key.erase(13, 1);
   return key;
 }
 
@@ -170,6 +172,8 @@ const std::map<std::string, std::string>& keys_the_readers_ask_for() {
     read("surface_wave_sphere.toml", {"surface.shape={kind=\"circle\",center=[0.0,0.0],radius=1.0}",
                                       "surface.velocity=[\"0\",\"0\"]"});
     read("surface_wave_sphere.toml", {"output.monitors={radius=\"x\"}"});
+    read("surface_joining_spheres.toml",
+         {"surface.contact.rules=[{surfaces=[\"left\",\"right\"],response=\"merge\"}]"});
     return out;
   }();
   return asked;

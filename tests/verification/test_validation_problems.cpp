@@ -40,6 +40,13 @@
 //                    sqrt(R0² − 2t) until R = 0.3 R0, and a circle in 2D; an ellipsoid
 //                    under averaged flow keeps
 //                    its volume within 1% and is a sphere within 2% at t = 2.5
+//   joining-spheres  §3.7.3: non-penetration keeps the spheres within r_min h of the plane
+//                    where they meet; delete joins them into one chamber enclosing the union
+//                    (within the seam band's share); merge joins them once the gap < r_min h
+//   dumbbell-pinch   §4.2.3: the neck pinches between t = 0.04 (cylinder law) and 0.08 and
+//                    the run goes on with two closed surfaces
+//   torus-genus      §4.2.3: under averaged flow the hole closes before t = 10 (paper: 7)
+//                    and the run goes on as one chamber
 //   surface-cdr-sphere §4.2.1: Tables 2 and 3 (errors within 1.5×, orders within 0.2)
 //   surface-wave-sphere §4.2.4: Table 4 (same tolerances)
 //   surface-half-pipe §4.2.2: ∫ φ dA kept within 1 % while the half pipe twists to t = 2
@@ -142,6 +149,18 @@ TEST(Validation, SurfacePointAddition) {
 }
 TEST(Validation, CurvatureFlows) {
   expect_all_checks_pass("curvature-flow");
+}
+
+TEST(Validation, JoiningSpheres) {
+  expect_all_checks_pass("joining-spheres");
+}
+
+TEST(Validation, DumbbellPinch) {
+  expect_all_checks_pass("dumbbell-pinch");
+}
+
+TEST(Validation, TorusGenus) {
+  expect_all_checks_pass("torus-genus");
 }
 TEST(Validation, SurfaceCdrSphere) {
   expect_all_checks_pass("surface-cdr-sphere");

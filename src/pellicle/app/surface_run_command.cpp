@@ -34,8 +34,16 @@ void print_surface_summary(const SurfaceCase<D>& c, const SurfaceSimulation<D>& 
   const double mean = static_cast<double>(nb.index.size()) / cloud.size() - 1.0;
   std::fprintf(out, "case       %s\n", c.title.c_str());
   if (!c.source.empty()) std::fprintf(out, "source     %s\n", c.source.c_str());
-  std::fprintf(out, "surface    %s (%s)\n", c.shape->describe().c_str(),
-               D == 2 ? "curve in 2D" : "surface in 3D");
+  for (const auto& surface : c.surfaces)
+    std::fprintf(out, "surface    %s%s%s (%s)\n", c.surfaces.size() > 1 ? surface.name.c_str() : "",
+                 c.surfaces.size() > 1 ? ": " : "", surface.shape->describe().c_str(),
+                 D == 2 ? "curve in 2D" : "surface in 3D");
+  const ContactOptions& contact = c.settings.contact;
+  const auto& names = contact_response_names();
+  if (c.surfaces.size() > 1 || contact.self_contact())
+    std::fprintf(out, "contact    between surfaces %s, within a surface %s, %zu rule(s) (§3.6)\n",
+                 names[static_cast<int>(contact.between)].c_str(),
+                 names[static_cast<int>(contact.self)].c_str(), contact.rules.size());
   std::fprintf(out, "points     %zu (%ld on the boundary), h %g, spacing %g (%.3g h)\n",
                cloud.size(), boundary, c.smoothing_length, c.spacing,
                c.spacing / c.smoothing_length);
@@ -60,7 +68,7 @@ void print_surface_summary(const SurfaceCase<D>& c, const SurfaceSimulation<D>& 
                c.settings.dt, std::ceil(c.settings.end_time / c.settings.dt - 1e-9));
   // As for MPM cases: what the run will hold, and what the case alone gave before sampling
   // (the check that refuses clouds too large for the machine).
-  const SurfaceSize estimate = estimate_surface_size(*c.shape, c.spacing);
+  const SurfaceSize estimate = estimate_surface_size<D>(c.shapes(), c.spacing);
   std::fprintf(out,
                "memory     about %.1f MB (%.1f kB a point; the shape's %s gave %.0f points "
                "before sampling)\n",

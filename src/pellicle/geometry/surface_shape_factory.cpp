@@ -142,6 +142,27 @@ SurfaceShapePtr<D> read_blobs(ParameterReader& in, const std::string&) {
 }
 
 template <int D>
+SurfaceShapePtr<D> read_dumbbell(ParameterReader& in, const std::string&) {
+  const Vec<D> c = in.has("center") ? read_vector<D>(in, "center") : Vec<D>(Vec<D>::Zero());
+  const double ball = in.number_or("ball_radius", 1.0, NumberRange::positive());
+  double separation = in.number_or("separation", 4.0, NumberRange::positive());
+  double rod = in.number_or("rod_radius", 0.2, NumberRange::positive());
+  if (!(separation > 2.0 * ball)) {
+    in.fail("separation", "expected separation > 2 ball_radius (the balls apart)");
+    separation = 4.0 * ball;
+  }
+  if (!(rod < ball)) {
+    in.fail("rod_radius", "expected rod_radius < ball_radius");
+    rod = 0.2 * ball;
+  } else if (ball > kSlenderest * rod) {
+    in.fail("rod_radius", "expected rod_radius at least ball_radius / " +
+                              describe_number(kSlenderest) + " (a thinner rod is not sampled)");
+    rod = ball / kSlenderest;
+  }
+  return make_dumbbell_shape<D>(c, ball, separation, rod);
+}
+
+template <int D>
 SurfaceShapePtr<D> read_mesh(ParameterReader& in, const std::string& base) {
   if constexpr (D == 3) {
     const std::string file = in.text("file");
@@ -192,6 +213,7 @@ const std::vector<Kind<D>>& kinds() {
       {"ellipsoid", 3, &read_ellipsoid<D>},  {"ellipse", 2, &read_ellipsoid<D>},
       {"torus", 3, &read_torus<D>},          {"half-pipe", 3, &read_half_pipe<D>},
       {"implicit-blobs", 0, &read_blobs<D>}, {"mesh", 3, &read_mesh<D>},
+      {"dumbbell", 0, &read_dumbbell<D>},
   };
   return table;
 }

@@ -39,6 +39,13 @@ template <int D>
 SurfaceShapePtr<D> make_implicit_blobs(std::vector<Vec<D>> centers, std::vector<double> radii,
                                        double level);
 
+//! The dumbbell of Suchde & Kuhnert §4.2.3: balls of radius `ball_radius` with centres
+//! `separation` apart along x about `center`, joined by a rod of radius `rod_radius` along x
+//! (rod_radius < ball_radius < separation / 2); the boundary of their union.
+template <int D>
+SurfaceShapePtr<D> make_dumbbell_shape(const Vec<D>& center, double ball_radius, double separation,
+                                       double rod_radius);
+
 //! A triangulated surface (at least one triangle); `name` is used by describe().
 SurfaceShapePtr<3> make_mesh_shape(SurfaceMesh mesh, std::string name);
 

@@ -141,8 +141,14 @@ double surface_bytes_per_point() {
 
 template <int D>
 SurfaceSize estimate_surface_size(const SurfaceShape<D>& shape, double spacing) {
+  return estimate_surface_size<D>(std::vector<const SurfaceShape<D>*>{&shape}, spacing);
+}
+
+template <int D>
+SurfaceSize estimate_surface_size(const std::vector<const SurfaceShape<D>*>& shapes,
+                                  double spacing) {
   SurfaceSize size;
-  size.measure = shape.measure();
+  for (const SurfaceShape<D>* shape : shapes) size.measure += shape->measure();
   // Divided step by step: (length / s) / s never overflows where length / s² might not.
   double points = size.measure / spacing;
   if constexpr (D == 3) points /= spacing;
@@ -154,9 +160,9 @@ SurfaceSize estimate_surface_size(const SurfaceShape<D>& shape, double spacing) 
 }
 
 template <int D>
-void refuse_oversized_surface(const SurfaceShape<D>& shape, double spacing,
+void refuse_oversized_surface(const std::vector<const SurfaceShape<D>*>& shapes, double spacing,
                               const SourceLocation& where, const std::string& key) {
-  const SurfaceSize size = estimate_surface_size(shape, spacing);
+  const SurfaceSize size = estimate_surface_size<D>(shapes, spacing);
   const double available = available_memory_bytes();
   char text[400];
   if (!(size.points <= kMostSurfacePoints)) {
@@ -178,12 +184,14 @@ void refuse_oversized_surface(const SurfaceShape<D>& shape, double spacing,
 
 template SurfaceSize estimate_surface_size<2>(const SurfaceShape<2>&, double);
 template SurfaceSize estimate_surface_size<3>(const SurfaceShape<3>&, double);
+template SurfaceSize estimate_surface_size<2>(const std::vector<const SurfaceShape<2>*>&, double);
+template SurfaceSize estimate_surface_size<3>(const std::vector<const SurfaceShape<3>*>&, double);
 template double surface_bytes_per_point<2>();
 template double surface_bytes_per_point<3>();
-template void refuse_oversized_surface<2>(const SurfaceShape<2>&, double, const SourceLocation&,
-                                          const std::string&);
-template void refuse_oversized_surface<3>(const SurfaceShape<3>&, double, const SourceLocation&,
-                                          const std::string&);
+template void refuse_oversized_surface<2>(const std::vector<const SurfaceShape<2>*>&, double,
+                                          const SourceLocation&, const std::string&);
+template void refuse_oversized_surface<3>(const std::vector<const SurfaceShape<3>*>&, double,
+                                          const SourceLocation&, const std::string&);
 template ProblemSize estimate_problem_size<2>(const Case<2>&);
 template ProblemSize estimate_problem_size<3>(const Case<3>&);
 template void refuse_oversized_problem<2>(const Case<2>&);

@@ -4,6 +4,7 @@
 //! bodies; surface cases from their shape's length or area and the cloud's spacing.
 
 #include <string>
+#include <vector>
 
 #include "pellicle/geometry/surface_shape.hpp"
 #include "pellicle/io/case.hpp"
@@ -43,6 +44,10 @@ struct SurfaceSize {
 //! Points of a cloud at `spacing` on `shape`, and the memory a run of it takes.
 template <int D>
 SurfaceSize estimate_surface_size(const SurfaceShape<D>& shape, double spacing);
+//! The same for the cloud of several shapes (their measures added).
+template <int D>
+SurfaceSize estimate_surface_size(const std::vector<const SurfaceShape<D>*>& shapes,
+                                  double spacing);
 //! Bytes a surface run takes per point (sampling, the cloud, neighbours, stencils, solver).
 template <int D>
 double surface_bytes_per_point();
@@ -51,7 +56,7 @@ double surface_bytes_per_point();
 //! points (more than its indices count) or need more than the available memory, naming the
 //! estimate, the memory and the key that sets the spacing (`key`, given at `where`).
 template <int D>
-void refuse_oversized_surface(const SurfaceShape<D>& shape, double spacing,
+void refuse_oversized_surface(const std::vector<const SurfaceShape<D>*>& shapes, double spacing,
                               const SourceLocation& where, const std::string& key);
 
 }  // namespace pellicle

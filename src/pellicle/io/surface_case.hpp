@@ -15,20 +15,37 @@
 
 namespace pellicle {
 
+//! One surface of a case: its name (contact rules and output refer to it) and its shape.
+template <int D>
+struct NamedSurface {
+  std::string name;
+  SurfaceShapePtr<D> shape;
+};
+
 template <int D>
 struct SurfaceCase {
   std::string file, name, title, source;
-  SurfaceShapePtr<D> shape;
-  double smoothing_length = 0.0;  //!< h of every initial point
-  double spacing = 0.0;           //!< minimum distance of the initial cloud
-  SourceLocation spacing_where;   //!< surface.smoothing_length in the input
-  PointSample<D> sample;          //!< the initial cloud
+  //! `[surface] shape` or the `[[surface.shapes]]`, in order: surface k's points start in
+  //! chamber k.
+  std::vector<NamedSurface<D>> surfaces;
+  double smoothing_length = 0.0;    //!< h of every initial point
+  double spacing = 0.0;             //!< minimum distance of the initial cloud
+  SourceLocation spacing_where;     //!< surface.smoothing_length in the input
+  PointSample<D> sample;            //!< the initial cloud, every surface's points in turn
+  std::vector<int> sample_surface;  //!< which surface each point of `sample` lies on
   SurfaceSettings settings;
   std::array<PointFormula, D> velocity;
   std::unique_ptr<SurfacePde<D>> pde;  //!< null: the cloud only moves
   OutputSettings output;
   //! history.csv columns `mean_<name>`: the mean over the points of a formula.
   std::vector<std::pair<std::string, PointFormula>> monitors;
+
+  std::vector<const SurfaceShape<D>*> shapes() const {
+    std::vector<const SurfaceShape<D>*> out;
+    for (const auto& s : surfaces)
+      if (s.shape) out.push_back(s.shape.get());
+    return out;
+  }
 };
 
 //! Whether the case describes a surface problem (a `[surface]` table).

@@ -14,15 +14,17 @@ bool is_surface_case(const CaseSource& source) {
 }
 
 int surface_case_dimension(const CaseSource& source) {
-  const toml::node* kind = source.root.at_path("surface.shape.kind").node();
+  const bool several = source.root.at_path("surface.shapes").is_array();
+  const std::string shape = several ? "surface.shapes[0]" : "surface.shape";
+  const toml::node* kind = source.root.at_path(shape + ".kind").node();
   const std::string name = kind && kind->is_string() ? kind->as_string()->get() : "";
   const auto listed = [&](const std::vector<std::string>& kinds) {
     return std::find(kinds.begin(), kinds.end(), name) != kinds.end();
   };
   const bool two = listed(surface_shape_kinds<2>()), three = listed(surface_shape_kinds<3>());
   if (two && three) {  // a kind of both dimensions: the length of its points decides
-    const toml::node* first = source.root.at_path("surface.shape.centers[0]").node();
-    if (!first) first = source.root.at_path("surface.shape.center").node();
+    const toml::node* first = source.root.at_path(shape + ".centers[0]").node();
+    if (!first) first = source.root.at_path(shape + ".center").node();
     const toml::array* a = first ? first->as_array() : nullptr;
     return a && a->size() == 2 ? 2 : 3;
   }
@@ -55,12 +57,68 @@ void read_velocity(TomlParameters& s, SurfaceCase<D>& c) {
   }
 }
 
+//! `shape = {…}` (one surface, named "surface") or `[[surface.shapes]]` (each with a
+//! `name`, default "surface-1", "surface-2", …).
+template <int D>
+void read_shapes(TomlParameters& s, SurfaceCase<D>& c) {
+  std::string base = std::filesystem::path(c.file).parent_path().string();
+  if (base.empty()) base = ".";
+  if (s.has("shape") && s.has("shapes")) {
+    s.fail("shapes", "expected either `shape` (one surface) or `shapes` (several), not both");
+    s.take("shapes");
+  }
+  if (!s.has("shapes")) {
+    if (auto shape = s.sub_table("shape", true))
+      c.surfaces.push_back({"surface", make_surface_shape<D>(*shape, base)});
+    return;
+  }
+  auto tables = s.sub_tables("shapes");
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    const std::string name = tables[k]->text_or("name", "surface-" + std::to_string(k + 1));
+    for (const auto& other : c.surfaces)
+      if (other.name == name) tables[k]->fail("name", "two surfaces are named '" + name + "'");
+    c.surfaces.push_back({name, make_surface_shape<D>(*tables[k], base)});
+  }
+}
+
+//! `[surface.contact]`: the responses of §3.6 between surfaces and within each.
+template <int D>
+void read_contact(TomlParameters& s, SurfaceCase<D>& c) {
+  auto t = s.sub_table("contact", false);
+  ContactOptions& o = c.settings.contact;
+  const auto& names = contact_response_names();
+  o.between = contact_response_from_name(t->choice("between", names, "none"));
+  o.self = contact_response_from_name(t->choice("self", names, "none"));
+  o.facing_limit = t->number_or("facing_limit", o.facing_limit, NumberRange::closed(-1.0, 0.0));
+  if (!t->has("rules")) return;
+  for (auto& rule : t->sub_tables("rules")) {
+    ContactRule r;
+    r.response = contact_response_from_name(rule->choice("response", names));
+    const toml::node* node = rule->take("surfaces");
+    const toml::array* list = node ? node->as_array() : nullptr;
+    int found[2] = {-1, -1};
+    if (list && list->size() == 2)
+      for (int e = 0; e < 2; ++e)
+        if (const auto* name = list->get(e)->as_string())
+          for (std::size_t k = 0; k < c.surfaces.size(); ++k)
+            if (c.surfaces[k].name == name->get()) found[e] = static_cast<int>(k);
+    if (found[0] < 0 || found[1] < 0) {
+      std::string known;
+      for (const auto& surface : c.surfaces) known += (known.empty() ? "" : ", ") + surface.name;
+      rule->fail("surfaces", "expected two surface names out of: " + known);
+      continue;
+    }
+    r.first = found[0];
+    r.second = found[1];
+    o.rules.push_back(r);
+  }
+}
+
 template <int D>
 void read_surface(TomlParameters& root, SurfaceCase<D>& c, std::uint64_t& seed) {
   auto s = root.sub_table("surface", true);
-  const std::string base = std::filesystem::path(c.file).parent_path().string();
-  if (auto shape = s->sub_table("shape", true))
-    c.shape = make_surface_shape<D>(*shape, base.empty() ? "." : base);
+  read_shapes(*s, c);
+  read_contact(*s, c);
   c.smoothing_length = s->number("smoothing_length", NumberRange::positive());
   c.spacing_where = s->location("smoothing_length");
   auto& m = c.settings.management;
@@ -154,15 +212,21 @@ SurfaceCase<D> read_surface_case(const CaseSource& source) {
   }  // unknown keys are reported as the readers go out of scope
   problems.throw_if_any();
   // Before the cloud is sampled: a shape far larger than its spacing would not fit.
-  refuse_oversized_surface<D>(*c.shape, c.spacing, c.spacing_where, "surface.smoothing_length");
-  c.sample = c.shape->sample({c.spacing, seed});
+  refuse_oversized_surface<D>(c.shapes(), c.spacing, c.spacing_where, "surface.smoothing_length");
+  for (std::size_t k = 0; k < c.surfaces.size(); ++k) {
+    const PointSample<D> part = c.surfaces[k].shape->sample({c.spacing, seed + k});
+    c.sample.points.insert(c.sample.points.end(), part.points.begin(), part.points.end());
+    c.sample.normals.insert(c.sample.normals.end(), part.normals.begin(), part.normals.end());
+    c.sample.boundary.insert(c.sample.boundary.end(), part.boundary.begin(), part.boundary.end());
+    c.sample_surface.insert(c.sample_surface.end(), part.size(), static_cast<int>(k));
+  }
   return c;
 }
 
 template <int D>
 std::unique_ptr<SurfaceSimulation<D>> build_surface_simulation(SurfaceCase<D>& c) {
   return build_surface_simulation<D>(c.sample, c.smoothing_length, c.settings, c.velocity,
-                                     std::move(c.pde));
+                                     std::move(c.pde), &c.sample_surface);
 }
 
 template SurfaceCase<2> read_surface_case<2>(const CaseSource&);

@@ -43,6 +43,8 @@ void write_surface_vtp(const std::string& path, const SurfaceSimulation<D>& s) {
   data_array(out, "Float64", "velocity", 3, as_xyz<D>(c.velocity));
   data_array(out, "Float64", "smoothing_length", 1, c.smoothing_length);
   data_array(out, "UInt8", "boundary", 1, boundary);
+  data_array(out, "Int32", "chamber", 1,
+             std::vector<std::int32_t>(c.chamber.begin(), c.chamber.end()));
   data_array(out, "Float64", "curvature", 1, s.curvature());
   for (std::size_t f = 0; f < c.field_names().size(); ++f)
     data_array(out, "Float64", c.field_names()[f], 1, c.field(static_cast<int>(f)));
@@ -75,7 +77,7 @@ SurfaceOutputWriter<D>::SurfaceOutputWriter(
   history_.open(settings_.directory + "/history.csv", std::ios::trunc);
   if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
   history_ << "time,step,points,added,merged,removed,solver_iterations,solver_residual,area,"
-              "enclosed_volume,parts";
+              "enclosed_volume,parts,chambers,contact_points,contact_removed";
   if (s.pde()) history_ << ",total_phi";
   if (s.pde() && s.pde()->exact()) history_ << ",error_l2,error_max";
   for (const auto& [name, formula] : monitors_) history_ << ",mean_" << name;
@@ -93,7 +95,9 @@ void SurfaceOutputWriter<D>::write_row(const SurfaceSimulation<D>& s) {
   const std::vector<double>* phi = s.pde() ? &s.cloud().field(s.pde()->unknown()) : nullptr;
   const SurfaceIntegrals totals = integrate(s.cloud(), s.neighbours(), phi, areas_);
   history_ << ',' << totals.area << ',' << totals.enclosed << ','
-           << connected_parts(s.neighbours());
+           << connected_parts(s.neighbours(), &s.external_neighbours()) << ','
+           << s.cloud().chamber_count() << ',' << s.last_contact().in_contact << ','
+           << s.contact_total().removed + s.debris_removed();
   if (phi) history_ << ',' << totals.integral;
   if (s.pde() && s.pde()->exact()) {
     const SolutionErrors e = solution_errors(s);

@@ -5,7 +5,7 @@
 
 namespace pellicle {
 
-int connected_parts(const NeighbourLists& neighbours) {
+int connected_parts(const NeighbourLists& neighbours, const NeighbourLists* more) {
   // Union–find with path halving over the links i–j of the lists.
   const std::size_t n = neighbours.points();
   std::vector<int> parent(n);
@@ -15,14 +15,17 @@ int connected_parts(const NeighbourLists& neighbours) {
     return i;
   };
   int parts = static_cast<int>(n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (long k = neighbours.begin(i); k < neighbours.end(i); ++k) {
-      const int a = root(static_cast<int>(i)), b = root(neighbours.index[k]);
-      if (a != b) {
-        parent[a] = b;
-        --parts;
+  for (const NeighbourLists* lists : {&neighbours, more}) {
+    if (!lists || lists->points() != n) continue;
+    for (std::size_t i = 0; i < n; ++i)
+      for (long k = lists->begin(i); k < lists->end(i); ++k) {
+        const int a = root(static_cast<int>(i)), b = root(lists->index[k]);
+        if (a != b) {
+          parent[a] = b;
+          --parts;
+        }
       }
-    }
+  }
   return parts;
 }
 

@@ -7,7 +7,8 @@
 
 namespace pellicle {
 
-//! How many connected parts the neighbour graph has (0 for an empty cloud).
-int connected_parts(const NeighbourLists& neighbours);
+//! How many connected parts the neighbour graph has (0 for an empty cloud), with the links
+//! of `more` too when given (S_i^ext beside S_i).
+int connected_parts(const NeighbourLists& neighbours, const NeighbourLists* more = nullptr);
 
 }  // namespace pellicle

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <utility>
 
+#include "pellicle/surface/chambers.hpp"
 #include "pellicle/surface/management_steps.hpp"
 #include "pellicle/surface/mls_interpolation.hpp"
 #include "pellicle/surface/one_ring.hpp"
@@ -272,6 +273,7 @@ void fill_holes(PointCloud<D>& cloud, NeighbourSearch<D>& search, const Manageme
   report.filled = true;
   for (int pass = 0; pass <= o.max_fill_passes; ++pass) {
     search.find(cloud, nb, o.one_ring_radius);
+    if (cloud.has_parts()) split_by_part(cloud, nb, nullptr);  // one-rings of one part (§3.6)
     const long n = static_cast<long>(cloud.size());
 #pragma omp parallel
     {
@@ -308,7 +310,8 @@ void fill_holes(PointCloud<D>& cloud, NeighbourSearch<D>& search, const Manageme
     for (std::size_t q = 0; q < kept.size(); ++q) {
       const Candidate<D>& c = all[kept[q]];
       targets[q] = {c.position,
-                    frame_with_normal<D>(cloud.frame[c.key[0]], c.normal, c.boundary_normal), c.h};
+                    frame_with_normal<D>(cloud.frame[c.key[0]], c.normal, c.boundary_normal), c.h,
+                    c.key[0]};
     }
     report.widened_fits += interpolate_carried(cloud, search, targets, weight_exponent, values);
     long promoted = 0;
@@ -322,6 +325,7 @@ void fill_holes(PointCloud<D>& cloud, NeighbourSearch<D>& search, const Manageme
         ++promoted;
       } else {
         i = cloud.add_point(c.position, c.h, c.boundary);
+        cloud.inherit_identity(i, static_cast<std::size_t>(c.key[0]));
       }
       store_carried(values, q, cloud, i);
       if (!(cloud.smoothing_length[i] > 0.0)) cloud.smoothing_length[i] = c.h;

@@ -14,10 +14,14 @@ namespace {
 //! there are more; returns their number.
 template <int D>
 int gather(const PointCloud<D>& cloud, const NeighbourSearch<D>& search, const Vec<D>& x,
-           double radius, MlsWeights& w, Vec<D>* offsets) {
+           double radius, int part_of, const Vec<D>& n, MlsWeights& w, Vec<D>* offsets) {
   thread_local std::vector<int> found;
   thread_local std::vector<std::pair<double, int>> by_distance;
   search.around(cloud, x, radius, found);
+  if (part_of >= 0)
+    found.erase(std::remove_if(found.begin(), found.end(),
+                               [&](int j) { return !cloud.on_part(j, part_of, n); }),
+                found.end());
   int count = static_cast<int>(found.size());
   if (count > kMaxStencilPoints) {
     by_distance.clear();
@@ -40,7 +44,9 @@ int gather(const PointCloud<D>& cloud, const NeighbourSearch<D>& search, const V
 
 template <int D>
 MlsFit mls_weights(const PointCloud<D>& cloud, const NeighbourSearch<D>& search, const Vec<D>& x,
-                   const Mat<D>& frame, double h, double weight_exponent, MlsWeights& w) {
+                   const Mat<D>& frame, double h, double weight_exponent, MlsWeights& w,
+                   int part_of) {
+  const Vec<D> n = frame.col(D - 1);
   const Eigen::Matrix<double, D, D - 1> tangents = frame.template leftCols<D - 1>();
   Vec<D> offsets[kMaxStencilPoints];
   FitTargets<D, 1> b = FitTargets<D, 1>::Zero();
@@ -48,7 +54,7 @@ MlsFit mls_weights(const PointCloud<D>& cloud, const NeighbourSearch<D>& search,
   FitCoefficients<D, 1> c;
   for (const double scale : {1.0, 1.5, 2.0}) {
     const double radius = scale * h;
-    const int count = gather(cloud, search, x, radius, w, offsets);
+    const int count = gather(cloud, search, x, radius, part_of, n, w, offsets);
     if (fit_coefficients<D, 1>(offsets, count, tangents, radius, weight_exponent, b, c) ==
         FitStatus::ok) {
       for (int k = 0; k < count; ++k) w.weight[k] = c(k, 0);
@@ -57,7 +63,7 @@ MlsFit mls_weights(const PointCloud<D>& cloud, const NeighbourSearch<D>& search,
   }
   // No second-order fit within 2 h: the Gaussian-weighted mean there (exact for constants).
   const double radius = 2.0 * h;
-  const int count = gather(cloud, search, x, radius, w, offsets);
+  const int count = gather(cloud, search, x, radius, part_of, n, w, offsets);
   double total = 0.0;
   for (int k = 0; k < count; ++k) {
     w.weight[k] = gaussian_weight(offsets[k].squaredNorm(), radius, weight_exponent);
@@ -84,8 +90,8 @@ long interpolate_carried(const PointCloud<D>& cloud, const NeighbourSearch<D>& s
   for (long q = 0; q < n; ++q) {
     const MlsTarget<D>& target = targets[q];
     MlsWeights w;
-    const MlsFit fit =
-        mls_weights(cloud, search, target.position, target.frame, target.h, weight_exponent, w);
+    const MlsFit fit = mls_weights(cloud, search, target.position, target.frame, target.h,
+                                   weight_exponent, w, target.part_of);
     if (fit == MlsFit::none) {
 #pragma omp critical(pellicle_mls_failure)
       failed = q;
@@ -137,9 +143,9 @@ void store_carried(const CarriedValues<D>& values, std::size_t q, PointCloud<D>&
 }
 
 template MlsFit mls_weights<2>(const PointCloud<2>&, const NeighbourSearch<2>&, const Vec2&,
-                               const Mat<2>&, double, double, MlsWeights&);
+                               const Mat<2>&, double, double, MlsWeights&, int);
 template MlsFit mls_weights<3>(const PointCloud<3>&, const NeighbourSearch<3>&, const Vec3&,
-                               const Mat<3>&, double, double, MlsWeights&);
+                               const Mat<3>&, double, double, MlsWeights&, int);
 template long interpolate_carried<2>(const PointCloud<2>&, const NeighbourSearch<2>&,
                                      const std::vector<MlsTarget<2>>&, double, CarriedValues<2>&);
 template long interpolate_carried<3>(const PointCloud<3>&, const NeighbourSearch<3>&,

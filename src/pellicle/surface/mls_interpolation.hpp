@@ -30,10 +30,12 @@ enum class MlsFit { second_order, widened, weighted_mean, none };
 //! kMaxStencilPoints of them when there are more), with W = exp(−c r²/h²) (c =
 //! `weight_exponent`) and the tangent plane of `frame` (columns t_1, …, n). `search` must
 //! hold the cloud as it is now (see NeighbourSearch::around). Safe to call from several
-//! threads at once. `none` means no point within 2 h.
+//! threads at once. `none` means no point within 2 h. With `part_of` ≥ 0 only the points on
+//! that point's part (with the frame's normal) take part.
 template <int D>
 MlsFit mls_weights(const PointCloud<D>& cloud, const NeighbourSearch<D>& search, const Vec<D>& x,
-                   const Mat<D>& frame, double h, double weight_exponent, MlsWeights& weights);
+                   const Mat<D>& frame, double h, double weight_exponent, MlsWeights& weights,
+                   int part_of = -1);
 
 //! Every per-point quantity besides position, frame and boundary data, at a set of places:
 //! smoothing length, velocity, previous velocity (valid where has_previous_velocity) and
@@ -54,6 +56,9 @@ struct MlsTarget {
   Vec<D> position;
   Mat<D> frame;
   double h;
+  //! A point of the part the new point belongs to: the fit takes only points on that part
+  //! (PointCloud::on_part with the frame's normal). −1: every point.
+  int part_of = -1;
 };
 
 //! Interpolate every quantity of `cloud` to `targets` (in parallel). A previous velocity is

@@ -4,6 +4,7 @@
 //! points, a parabola along the boundary for boundary points, and the checks that a place is
 //! free. Header-only: small functions called once per candidate from the parallel loops.
 
+#include <algorithm>
 #include <vector>
 
 #include "pellicle/pointcloud/neighbour_search.hpp"
@@ -25,19 +26,25 @@ Vec<D> approximate_normal(const PointCloud<D>& cloud, const int* points, int cou
 //! Σ_j ω_j n_approx·n_j, the place where the vectors to the points are tangential on average,
 //! Σ_j ω_j (x_j − x_new)·n_j = 0 (eq 8). The paper's rule is ω_j = 1 and step = 1; `weights`
 //! (null for ω_j = 1) and `step` give the variant of docs/theory/surface-management.md.
-//! Returns x_c when the normals disagree (Σ_j ω_j n_approx·n_j ≤ 0).
+//! Returns x_c when the normals disagree (Σ_j ω_j n_approx·n_j ≤ 0). The move is at most the
+//! simplex's size (the largest |x_j − x_c|): on a smooth surface it is κ r²/2, far below it;
+//! across a crease (two sheets pressed flat by contact meet the rest of their spheres) eq 8
+//! can put the point far off the surface.
 template <int D>
 Vec<D> curvature_corrected(const PointCloud<D>& cloud, const int* points, const double* weights,
                            int count, const Vec<D>& x_c, const Vec<D>& n_approx, double step) {
-  double along = 0.0, across = 0.0;
+  double along = 0.0, across = 0.0, size = 0.0;
   for (int k = 0; k < count; ++k) {
     const Vec<D> n = cloud.normal(points[k]);
     const double w = weights ? weights[k] : 1.0;
     along += w * (cloud.position[points[k]] - x_c).dot(n);
     across += w * n_approx.dot(n);
+    size = std::max(size, (cloud.position[points[k]] - x_c).norm());
   }
   if (!(across > 0.0)) return x_c;
-  return x_c + step * along / across * n_approx;
+  const Vec<D> move = step * along / across * n_approx;
+  const double length = move.norm();
+  return length > size ? Vec<D>(x_c + (size / length) * move) : Vec<D>(x_c + move);
 }
 
 //! True when no point of `cloud` other than `except[0 … count)` lies closer than `radius` to

@@ -25,6 +25,9 @@ std::size_t PointCloud<D>::add_point(const Vec<D>& x, double h, bool on_boundary
   velocity.push_back(Vec<D>::Zero());
   previous_velocity.push_back(Vec<D>::Zero());
   has_previous_velocity.push_back(0);
+  chamber.push_back(0);
+  surface.push_back(0);
+  contact_side.push_back(0);
   for (auto& values : field_values_) values.push_back(0.0);
   ++generation_;
   return position.size() - 1;
@@ -42,8 +45,39 @@ void PointCloud<D>::remove_points(const std::vector<std::uint8_t>& remove) {
   compact(velocity, remove);
   compact(previous_velocity, remove);
   compact(has_previous_velocity, remove);
+  compact(chamber, remove);
+  compact(surface, remove);
+  compact(contact_side, remove);
   for (auto& values : field_values_) compact(values, remove);
   ++generation_;
+}
+
+template <int D>
+int PointCloud<D>::chamber_count() const {
+  std::vector<int> ids(chamber);
+  std::sort(ids.begin(), ids.end());
+  return static_cast<int>(std::unique(ids.begin(), ids.end()) - ids.begin());
+}
+
+template <int D>
+void PointCloud<D>::keep_apart(int s, int t) {
+  const int size = std::max({apart_size_, s + 1, t + 1});
+  if (size > apart_size_) {
+    std::vector<std::uint8_t> grown(static_cast<std::size_t>(size) * size, 0);
+    for (int a = 0; a < apart_size_; ++a)
+      for (int b = 0; b < apart_size_; ++b) grown[a * size + b] = apart_[a * apart_size_ + b];
+    apart_.swap(grown);
+    apart_size_ = size;
+  }
+  apart_[s * apart_size_ + t] = apart_[t * apart_size_ + s] = 1;
+}
+
+template <int D>
+bool PointCloud<D>::has_parts() const {
+  const auto differs = [](const std::vector<int>& ids) {
+    return std::any_of(ids.begin(), ids.end(), [&](int c) { return c != ids[0]; });
+  };
+  return facing_limit >= -1.0 || differs(chamber) || (apart_size_ > 0 && differs(surface));
 }
 
 template <int D>

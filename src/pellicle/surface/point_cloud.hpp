@@ -34,12 +34,54 @@ class PointCloud {
   //! v^(n−1), for the second-order movement (eq 3); valid where has_previous_velocity.
   std::vector<Vec<D>> previous_velocity;
   std::vector<std::uint8_t> has_previous_velocity;
+  //! The chamber of §3.6: which connected manifold the point belongs to. Contact is detected
+  //! between chambers (and between facing parts of one chamber); chambers are joined by
+  //! delete and merge contact and split when a surface comes apart (surface/chambers.hpp).
+  std::vector<int> chamber;
+  //! Which of the case's surfaces the point comes from (0, 1, …): the contact rules are
+  //! chosen by it, whatever the chambers have become since.
+  std::vector<int> surface;
+  //! The sign of the signed distance DC_i to the nearest other part at the last step it had
+  //! one within h (§3.6), 0 when it had none: a change of sign is a penetration.
+  std::vector<std::int8_t> contact_side;
 
   std::size_t size() const { return position.size(); }
   Vec<D> normal(std::size_t i) const { return frame[i].col(D - 1); }
 
-  //! Add a point with an identity frame, zero velocity and zero fields; returns its index.
+  //! Add a point with an identity frame, zero velocity and zero fields, in chamber 0 of
+  //! surface 0; returns its index.
   std::size_t add_point(const Vec<D>& x, double h, bool on_boundary);
+  //! Give point `to` the chamber, surface and contact side of point `from` (a point made
+  //! from others by point management belongs where they do).
+  void inherit_identity(std::size_t to, std::size_t from) {
+    chamber[to] = chamber[from];
+    surface[to] = surface[from];
+    contact_side[to] = contact_side[from];
+  }
+  //! Number of distinct chambers (0 for an empty cloud).
+  int chamber_count() const;
+
+  //! Self-contact (§3.6): two points of one chamber whose normals are closer to opposite
+  //! than this (n_i·n_j below it) lie on different parts of it, e.g. the two sides of a
+  //! pinching neck. −2 (below any n_i·n_j): a chamber is one part.
+  double facing_limit = -2.0;
+  //! Keep the points of surfaces s and t on different parts even once they share a chamber:
+  //! delete contact joins two chambers into one and goes on between them.
+  void keep_apart(int s, int t);
+  bool kept_apart(int s, int t) const {
+    return s != t && s < apart_size_ && t < apart_size_ && apart_[s * apart_size_ + t];
+  }
+  //! Whether point j lies on the part of point i, were i's normal n: the points S_i may hold
+  //! (§3.6), the others being S_i^ext. Same chamber, surfaces not kept apart, normals not
+  //! facing.
+  bool on_part(std::size_t j, std::size_t i, const Vec<D>& n) const {
+    return chamber[j] == chamber[i] && !kept_apart(surface[i], surface[j]) &&
+           normal(j).dot(n) >= facing_limit;
+  }
+  bool same_part(std::size_t i, std::size_t j) const { return on_part(j, i, normal(i)); }
+  //! Whether some pair of points may lie on different parts (several chambers, surfaces kept
+  //! apart, or self-contact on): neighbourhoods must then be split (surface/chambers.hpp).
+  bool has_parts() const;
   //! Remove the points whose flag is set, keeping the order of the others.
   void remove_points(const std::vector<std::uint8_t>& remove);
 
@@ -57,6 +99,8 @@ class PointCloud {
   operator PointSet<D>() const { return {position, smoothing_length, generation_}; }
 
  private:
+  std::vector<std::uint8_t> apart_;  //!< apart_size_² flags of keep_apart
+  int apart_size_ = 0;
   std::vector<std::string> field_names_;
   std::vector<std::vector<double>> field_values_;
   long generation_ = 0;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <tuple>
 
+#include "pellicle/surface/chambers.hpp"
 #include "pellicle/surface/management_steps.hpp"
 #include "pellicle/surface/mls_interpolation.hpp"
 #include "pellicle/surface/placement.hpp"
@@ -58,6 +59,7 @@ void merge_close_points(PointCloud<D>& cloud, NeighbourSearch<D>& search,
   CarriedValues<D> values;
   for (int round = 0; round < o.max_merge_rounds; ++round) {
     search.find(cloud, close, o.r_min);
+    if (cloud.has_parts()) split_by_part(cloud, close, nullptr);  // never across parts (§3.6)
     close_pairs(cloud, close, pairs);
     if (pairs.empty()) break;
     // Closest pairs first; a point takes part in one merge per round.
@@ -77,7 +79,7 @@ void merge_close_points(PointCloud<D>& cloud, NeighbourSearch<D>& search,
         m.kept = bi ? p.i : p.j;
         m.gone = bi ? p.j : p.i;
         m.boundary_normal = cloud.boundary_normal[m.kept];
-        t = {cloud.position[m.kept], cloud.frame[m.kept], cloud.smoothing_length[m.kept]};
+        t = {cloud.position[m.kept], cloud.frame[m.kept], cloud.smoothing_length[m.kept], m.kept};
         ++report.removed;
       } else {
         const Vec<D> n = approximate_normal(cloud, v, 2);  // eq 6 for the pair
@@ -96,7 +98,7 @@ void merge_close_points(PointCloud<D>& cloud, NeighbourSearch<D>& search,
                   : mid;
         }
         t = {x, frame_with_normal<D>(cloud.frame[p.i], normal, m.boundary_normal),
-             0.5 * (cloud.smoothing_length[p.i] + cloud.smoothing_length[p.j])};
+             0.5 * (cloud.smoothing_length[p.i] + cloud.smoothing_length[p.j]), p.i};
         ++report.merged;
       }
       merges.push_back(m);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/surface/chambers.hpp"
 #include "pellicle/surface/quadrature.hpp"
 
 namespace pellicle {
@@ -20,7 +21,15 @@ SurfaceSimulation<D>::SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings set
       pde_(std::move(pde)),
       search_(settings.rebuild_fraction) {
   if (settings_.minimum_neighbours == 0) settings_.minimum_neighbours = D == 3 ? 10 : 5;
-  search_.find(cloud_, neighbours_, 1.0, settings_.minimum_neighbours);
+  const ContactOptions& contact = settings_.contact;
+  cloud_.facing_limit = contact.self_contact() ? contact.facing_limit : -2.0;
+  // Delete contact joins chambers and goes on between their surfaces.
+  const int surfaces =
+      cloud_.size() ? *std::max_element(cloud_.surface.begin(), cloud_.surface.end()) + 1 : 0;
+  for (int s = 0; s < surfaces; ++s)
+    for (int t = s + 1; t < surfaces; ++t)
+      if (contact.response(s, t) == ContactResponse::remove) cloud_.keep_apart(s, t);
+  find_neighbours();
   estimate_frames(cloud_, neighbours_, settings_.frames, false);
   orient_consistently(cloud_, neighbours_, reference);  // the sweep of §3.2, once
   update_geometry(true);
@@ -28,8 +37,36 @@ SurfaceSimulation<D>::SurfaceSimulation(PointCloud<D> cloud, SurfaceSettings set
 }
 
 template <int D>
+void SurfaceSimulation<D>::find_neighbours() {
+  const int minimum = settings_.minimum_neighbours;
+  // Repair where contact has cut a surface (or a pinching neck threw points off or
+  // collapsed into a thread): stray pieces too small for a normal, and points whose part
+  // has too few points within 2 h for a stencil, go; the pieces become chambers. A few
+  // rounds, as each removal can leave others short.
+  for (int round = 0;; ++round) {
+    search_.find(cloud_, neighbours_, 1.0, minimum);
+    if (!cloud_.has_parts()) {
+      external_.offset.assign(cloud_.size() + 1, 0);
+      external_.index.clear();
+      return;
+    }
+    split_by_part(cloud_, neighbours_, &external_);  // S_i and S_i^ext of §3.6
+    if (!contact_active()) {
+      top_up_parts(cloud_, search_, neighbours_, minimum, short_of_);
+      return;
+    }
+    const ChamberReport r = split_chambers(cloud_, neighbours_, external_, minimum + 1);
+    debris_ += r.debris;
+    if (r.debris > 0) continue;
+    if (top_up_parts(cloud_, search_, neighbours_, minimum, short_of_) == 0 || round >= 4) return;
+    debris_ += std::count(short_of_.begin(), short_of_.end(), 1);
+    cloud_.remove_points(short_of_);
+  }
+}
+
+template <int D>
 void SurfaceSimulation<D>::update_geometry(bool keep_side) {
-  search_.find(cloud_, neighbours_, 1.0, settings_.minimum_neighbours);
+  find_neighbours();
   estimate_frames(cloud_, neighbours_, settings_.frames, keep_side);
   build_stencils(cloud_, neighbours_, settings_.gfdm, stencils_);
   if (settings_.refine_normals) {
@@ -72,20 +109,29 @@ void SurfaceSimulation<D>::update_geometry(bool keep_side) {
       curvature_.swap(smooth);
     }
   }
-  // κ̄ of eq 38, the surface's average ∮ κ dA / ∮ dA over the points' one-ring areas, when
+  average_curvature();
+}
+
+template <int D>
+void SurfaceSimulation<D>::average_curvature() {
+  // κ̄ of eq 38, each chamber's average ∮ κ dA / ∮ dA over the points' one-ring areas, when
   // the velocity reads it (elsewhere the mean over points). The plain mean over points leans
   // toward where points crowd: an ellipsoid under the averaged flow gained 6.6 % of its volume
   // by t = 1 with it.
   const bool by_area = std::any_of(velocity_.begin(), velocity_.end(),
                                    [](const auto& f) { return f.reads_mean_curvature(); });
   if (by_area) point_areas(cloud_, neighbours_, areas_);
-  double weighted = 0.0, total = 0.0;
+  const int chambers =
+      cloud_.size() ? *std::max_element(cloud_.chamber.begin(), cloud_.chamber.end()) + 1 : 0;
+  std::vector<double> total(chambers, 0.0);
+  kappa_mean_.assign(chambers, 0.0);
   for (std::size_t i = 0; i < curvature_.size(); ++i) {
     const double a = by_area ? areas_[i] : 1.0;
-    weighted += a * curvature_[i];
-    total += a;
+    kappa_mean_[cloud_.chamber[i]] += a * curvature_[i];
+    total[cloud_.chamber[i]] += a;
   }
-  kappa_mean_ = total > 0.0 ? weighted / total : 0.0;
+  for (int c = 0; c < chambers; ++c)
+    kappa_mean_[c] = total[c] > 0.0 ? kappa_mean_[c] / total[c] : 0.0;
 }
 
 template <int D>
@@ -97,7 +143,7 @@ PointValues SurfaceSimulation<D>::values_at(std::size_t i, double t) const {
   const int phi = pde_ ? pde_->unknown() : -1;
   v.phi = phi >= 0 ? cloud_.field(phi)[i] : 0.0;
   v.kappa = curvature_.empty() ? 0.0 : curvature_[i];
-  v.kappa_mean = kappa_mean_;
+  v.kappa_mean = mean_curvature_value(i);
   v.h = cloud_.smoothing_length[i];
   return v;
 }
@@ -134,7 +180,9 @@ void SurfaceSimulation<D>::advance_one_step() {
   evaluate_velocity(time_, cloud_.velocity);    // 1. v⁽ⁿ⁾
   move_points(cloud_, dt, settings_.movement);  // 2. eq 3 (eq 2 first)
   time_ += dt;
-  update_geometry(true);                       // 3. frames keep their side (eq 5)
+  update_geometry(true);  // 3. frames keep their side (eq 5)
+  resolve_contact();      // 3b. §3.6
+  bool changed = last_contact_.changed();
   if (settings_.manage && management_due()) {  // 4. §3.4–3.5
     const ManagementReport r =
         manage_points(cloud_, search_, settings_.management, settings_.frames);
@@ -143,8 +191,9 @@ void SurfaceSimulation<D>::advance_one_step() {
     management_total_.added += r.added;
     management_total_.merged += r.merged;
     management_total_.removed += r.removed;
-    if (r.changed()) update_geometry(true);
+    changed = changed || r.changed();
   }
+  if (changed) update_geometry(true);
   if (pde_) {  // 5. implicit step with ∇_M · v⁽ⁿ⁺¹⁾
     evaluate_velocity(time_, next_velocity_);
     const long n = static_cast<long>(cloud_.size());
@@ -155,7 +204,33 @@ void SurfaceSimulation<D>::advance_one_step() {
     pde_->advance(*this, dt, divergence_);
   }
   ++steps_;
-  check_state();  // 6.
+  if (cloud_.has_parts() && split_chambers(cloud_, neighbours_, external_).split > 0)  // 6.
+    average_curvature();  // κ̄ of each new chamber
+  check_state();
+}
+
+template <int D>
+bool SurfaceSimulation<D>::contact_active() const {
+  const ContactOptions& o = settings_.contact;
+  return o.between != ContactResponse::none || o.self != ContactResponse::none ||
+         std::any_of(o.rules.begin(), o.rules.end(),
+                     [](const ContactRule& r) { return r.response != ContactResponse::none; });
+}
+
+template <int D>
+void SurfaceSimulation<D>::resolve_contact() {
+  last_contact_ = ContactReport{};
+  if (!contact_active() || external_.index.empty()) {
+    std::fill(cloud_.contact_side.begin(), cloud_.contact_side.end(), 0);
+    return;
+  }
+  last_contact_ = resolve_contacts(cloud_, neighbours_, external_, settings_.contact,
+                                   settings_.management.r_min);
+  contact_total_.penetrated += last_contact_.penetrated;
+  contact_total_.near += last_contact_.near;
+  contact_total_.projected += last_contact_.projected;
+  contact_total_.removed += last_contact_.removed;
+  contact_total_.joined += last_contact_.joined;
 }
 
 template <int D>

@@ -4,17 +4,21 @@
 //! PDE it carries. One step reads as the paper's algorithm:
 //!   1. velocity  v⁽ⁿ⁾ from the case's formulas at the current points (φⁿ, n, κ)
 //!   2. move      eq 3 (eq 2 at the first step)
-//!   3. geometry  neighbours, frames kept on their side (eq 5), stencils (eqs 17–27)
+//!   3. geometry  neighbours (split by part: S_i and S_i^ext, §3.6), frames kept on their
+//!                side (eq 5), stencils (eqs 17–27)
+//!   3b. contact  signed distances to other parts, penetration and near contact, the
+//!                responses of §3.6 (contact.hpp); geometry again if points moved or went
 //!   4. manage    fill holes, merge close points (§3.4–3.5) once points have moved a tenth
 //!                of h since the last time; geometry again if the cloud changed
 //!   5. pde       one implicit step on the new cloud with ∇_M · v⁽ⁿ⁺¹⁾ (eq 29, eq 45)
-//!   6. observe   output, failure checks
+//!   6. observe   chambers split by connected components, output, failure checks
 
 #include <array>
 #include <memory>
 #include <vector>
 
 #include "pellicle/core/observer.hpp"
+#include "pellicle/surface/contact.hpp"
 #include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/management.hpp"
 #include "pellicle/surface/movement.hpp"
@@ -44,6 +48,8 @@ struct SurfaceSettings {
   int minimum_neighbours = 0;
   //! Smooth κ with eq 40, twice, before formulas read it (curvature flows need it).
   bool smooth_curvature = true;
+  //! Contact between the surfaces of a case and within each (§3.6).
+  ContactOptions contact;
 };
 
 template <int D>
@@ -76,11 +82,22 @@ class SurfaceSimulation {
   PointCloud<D>& cloud() { return cloud_; }
   const PointCloud<D>& cloud() const { return cloud_; }
   const NeighbourLists& neighbours() const { return neighbours_; }
+  //! S_i^ext: the points within h on other parts (empty lists when the cloud is one part).
+  const NeighbourLists& external_neighbours() const { return external_; }
+  //! What contact detection found and did at the last step, and in total.
+  const ContactReport& last_contact() const { return last_contact_; }
+  const ContactReport& contact_total() const { return contact_total_; }
+  //! Points removed by the repair after contact: pieces too small to carry a normal.
+  long debris_removed() const { return debris_; }
   const SurfaceStencils<D>& stencils() const { return stencils_; }
   SurfacePde<D>* pde() const { return pde_.get(); }
-  //! κ per point (eq 37; smoothed by eq 40 when settings say so) and its cloud average.
+  //! κ per point (eq 37; smoothed by eq 40 when settings say so).
   const std::vector<double>& curvature() const { return curvature_; }
-  double mean_curvature_value() const { return kappa_mean_; }
+  //! κ̄ of eq 38 over the chamber of point i (each closed surface keeps its own volume under
+  //! the averaged flow).
+  double mean_curvature_value(std::size_t i) const {
+    return kappa_mean_.empty() ? 0.0 : kappa_mean_[cloud_.chamber[i]];
+  }
   //! What formulas read at point i, with φ from the PDE's unknown at time t.
   PointValues values_at(std::size_t i, double t) const;
   SparseSystem& system() { return system_; }
@@ -94,6 +111,10 @@ class SurfaceSimulation {
  private:
   void advance_one_step();
   void update_geometry(bool keep_side);
+  void find_neighbours();
+  void average_curvature();
+  void resolve_contact();
+  bool contact_active() const;
   void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
   void check_state() const;
   bool management_due() const;
@@ -104,6 +125,10 @@ class SurfaceSimulation {
   std::unique_ptr<SurfacePde<D>> pde_;
   NeighbourSearch<D> search_;
   NeighbourLists neighbours_;
+  NeighbourLists external_;
+  ContactReport last_contact_, contact_total_;
+  long debris_ = 0;
+  std::vector<std::uint8_t> short_of_;  //!< scratch of the repair (find_neighbours)
   SurfaceStencils<D> stencils_;
   SparseSystem system_;
   std::vector<double> curvature_, divergence_;
@@ -113,7 +138,7 @@ class SurfaceSimulation {
   std::vector<Vec<D>> next_velocity_;
   std::vector<Vec<D>> managed_at_;  //!< positions when management last ran
   long managed_generation_ = -1;
-  double kappa_mean_ = 0.0;
+  std::vector<double> kappa_mean_;  //!< κ̄ per chamber id
   double time_ = 0.0;
   long steps_ = 0;
   ManagementReport management_total_;
