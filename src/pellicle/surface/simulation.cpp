@@ -58,7 +58,7 @@ void SurfaceSimulation<D>::find_neighbours() {
     const ChamberReport r = split_chambers(cloud_, neighbours_, external_, minimum + 1);
     debris_ += r.debris;
     if (r.debris > 0) continue;
-    if (top_up_parts(cloud_, search_, neighbours_, minimum, short_of_) == 0 || round >= 4) return;
+    if (top_up_parts(cloud_, search_, neighbours_, minimum, short_of_) == 0 || round >= 16) return;
     debris_ += std::count(short_of_.begin(), short_of_.end(), 1);
     cloud_.remove_points(short_of_);
   }
