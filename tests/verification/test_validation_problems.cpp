@@ -40,8 +40,9 @@
 //                    sqrt(R0² − 2t) until R = 0.3 R0, and a circle in 2D; an ellipsoid
 //                    under averaged flow keeps
 //                    its volume within 1% and is a sphere within 2% at t = 2.5
-//   joining-spheres  §3.7.3: non-penetration keeps the spheres within r_min h of the plane
-//                    where they meet; delete joins them into one chamber enclosing the union
+//   joining-spheres  §3.7.3: non-penetration keeps the spheres within |v|Δt + r_min h of
+//                    the plane where they meet (h at the disc's rim); delete joins them into
+//                    one chamber enclosing the union
 //                    (within the seam band's share); merge joins them once the gap < r_min h
 //   dumbbell-pinch   §4.2.3: the neck pinches between t = 0.04 (cylinder law) and 0.08 and
 //                    the run goes on with two closed surfaces
