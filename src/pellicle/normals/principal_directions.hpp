@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pellicle/core/types.hpp"
-#include "pellicle/normals/cell_groups.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 namespace pellicle {
 
