@@ -4,6 +4,7 @@
 
 #include "pellicle/normals/frame_estimator.hpp"
 #include "pellicle/pointcloud/cell_groups.hpp"
+#include "pellicle/pointcloud/local_frame.hpp"
 #include "pellicle/pointcloud/orientation_sweep.hpp"
 
 namespace pellicle {
