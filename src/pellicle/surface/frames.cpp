@@ -5,6 +5,7 @@
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/loop_failure.hpp"
 #include "pellicle/pointcloud/orientation_sweep.hpp"
+#include "pellicle/pointcloud/weighted_moments.hpp"
 
 namespace pellicle {
 
@@ -14,7 +15,7 @@ namespace {
 template <int D>
 Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, std::size_t i,
                         double c, bool boundary_only, int& used) {
-  Mat<D> m = Mat<D>::Zero();
+  WeightedMoments<D, false> m;
   used = 0;
   const Vec<D>& x = cloud.position[i];
   const double h = cloud.smoothing_length[i];
@@ -24,10 +25,10 @@ Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, st
     const Vec<D> d = cloud.position[j] - x;
     const double r2 = d.squaredNorm();
     if (r2 == 0.0) continue;
-    m += gaussian_weight(r2, h, c) / r2 * d * d.transpose();
+    m.add(d, gaussian_weight(r2, h, c) / r2);
     ++used;
   }
-  return m;
+  return m.matrix();
 }
 
 //! Boundary neighbours whose second spread is above this share of the first lie along two
@@ -83,8 +84,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
       }
     }
     if (!done) {
-      Eigen::SelfAdjointEigenSolver<Mat<D>> solver(m);
-      normal = solver.eigenvectors().col(0);  // smallest eigenvalue first
+      normal = least_spread_direction<D>(m);
       if constexpr (D == 2) {
         if (cloud.boundary[i]) boundary_normal = Vec2(normal.y(), -normal.x());
       } else if (cloud.boundary[i]) {

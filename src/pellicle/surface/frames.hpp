@@ -11,15 +11,10 @@
 
 #include "pellicle/pointcloud/local_frame.hpp"
 #include "pellicle/pointcloud/neighbour_search.hpp"
+#include "pellicle/pointcloud/weights.hpp"
 #include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
-
-//! Gaussian weight of a neighbour at distance r from a point of smoothing length h,
-//! W = exp(−c r²/h²), used by the normals (eq 4) and the GFDM stencils (eqs 19, 27).
-inline double gaussian_weight(double r_squared, double h, double c) {
-  return std::exp(-c * r_squared / (h * h));
-}
 
 struct FrameOptions {
   double weight_exponent = 2.0;  //!< c of the Gaussian weight
