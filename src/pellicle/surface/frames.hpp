@@ -2,11 +2,10 @@
 //! Normals and tangents of a point cloud (Suchde & Kuhnert §3.2): the normal n_i minimises
 //! the weighted sum of cos² of the angles between n_i and the directions to the neighbours
 //! (eq 4), the tangents complete an orthonormal frame; boundary points also get the boundary
-//! normal ν. The frames are pointcloud/local_frame.hpp's (set_normal, flip_normal there). The
-//! orientation is made consistent once by a sweep through the cloud and kept afterwards by n_new ·
-//! n_old > 0 (eq 5).
+//! normal ν. The frames are pointcloud/local_frame.hpp's (set_normal, flip_normal there).
+//! The orientation is made consistent once by a sweep through the cloud and kept afterwards
+//! by n_new · n_old > 0 (eq 5).
 
-#include <cmath>
 #include <vector>
 
 #include "pellicle/pointcloud/local_frame.hpp"
