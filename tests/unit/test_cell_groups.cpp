@@ -1,11 +1,12 @@
-// Points grouped by grid cell (the local normal constructions' first step): groups hold the
-// points of their cell, and a point whose cell cannot be numbered is refused, not cast.
+// Cell grouping of points (pointcloud/, the local normal constructions' first step): groups
+// hold the points of their cell, a place maps to the cell the grouping numbers it by, and a
+// point whose cell cannot be numbered is refused, not cast.
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <stdexcept>
 
-#include "pellicle/normals/cell_groups.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 namespace pellicle {
 namespace {
@@ -18,6 +19,15 @@ TEST(CellGroups, GroupsHoldThePointsOfTheirCell) {
   EXPECT_EQ(groups.count_in(IVec<2>(1, 0)), 1);
   EXPECT_EQ(groups.count_in(IVec<2>(-1, 0)), 1);
   EXPECT_EQ(groups.count_in(IVec<2>(0, 1)), 0);
+}
+
+TEST(CellGroups, PlacesMapToTheCellsOfAShiftedGrid) {
+  const std::vector<Vec2> x = {{0.12, 0.31}, {-0.07, 0.02}};
+  const CellGroups<2> groups(x, 0, 2, Vec2(0.05, -0.05), 0.1);
+  EXPECT_EQ(groups.cell_of(x[0]), IVec<2>(0, 3));
+  EXPECT_EQ(groups.cell_of(x[1]), IVec<2>(-2, 0));
+  EXPECT_EQ(groups.find(groups.cell_of(x[1])), groups.find(IVec<2>(-2, 0)));
+  EXPECT_GE(groups.find(IVec<2>(-2, 0)), 0);
 }
 
 TEST(CellGroups, PointsWhoseCellCannotBeNumberedAreRefused) {

@@ -6,9 +6,9 @@
 #include <unordered_map>
 
 #include "pellicle/core/bspline.hpp"
-#include "pellicle/normals/cell_groups.hpp"
 #include "pellicle/normals/mirror_images.hpp"
 #include "pellicle/normals/principal_directions.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 namespace pellicle {
 

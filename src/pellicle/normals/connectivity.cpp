@@ -5,16 +5,9 @@
 #include <algorithm>
 #include <map>
 
-namespace pellicle {
+#include "pellicle/pointcloud/local_frame.hpp"
 
-Vec3 continue_tangent(const Vec3& previous, const Vec3& n) {
-  Vec3 t = previous - previous.dot(n) * n;
-  if (t.squaredNorm() < 1e-12) {
-    const Vec3 axis = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    t = axis - axis.dot(n) * n;
-  }
-  return t.normalized();
-}
+namespace pellicle {
 
 namespace {
 

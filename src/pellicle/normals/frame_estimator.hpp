@@ -1,8 +1,10 @@
 #pragma once
 //! Local frames of membrane points: in 2D the unit tangent t and normal n of the curve (n is t
-//! turned +90°); in 3D the unit normal n and an in-plane tangent t1 (t2 = n × t1). The
-//! membrane law works in these frames (thesis §5.3 step 7). Estimators are chosen by name per
-//! membrane body; they work on a body's points in one call.
+//! turned +90°); in 3D the unit normal n and an in-plane tangent t1 (t2 = n × t1): the
+//! columns of pointcloud/local_frame.hpp's frame, kept as two arrays (frame_of assembles the
+//! frame; 3D tangents are continued by its continue_tangent). The membrane law works in these
+//! frames (thesis §5.3 step 7). Estimators are chosen by name per membrane body; they work on
+//! a body's points in one call.
 
 #include <memory>
 #include <string>
@@ -70,10 +72,6 @@ struct FrameEstimatorChoice {
 //! Registered estimators (registry.cpp).
 template <int D>
 const std::vector<FrameEstimatorChoice<D>>& frame_estimators();
-
-//! t1 continued from the previous tangent, projected into the plane normal to n; a fixed
-//! axis when there is none yet. Keeps in-plane directions from jumping between steps.
-Vec3 continue_tangent(const Vec3& previous, const Vec3& normal);
 
 //! Complete unit normals of points [begin, end) to frames, with signs settled: a normal
 //! keeps the side of the previous one (given on entry in `previous`, zero if none); points

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 
-#include "pellicle/normals/cell_groups.hpp"
 #include "pellicle/normals/frame_estimator.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
+#include "pellicle/pointcloud/local_frame.hpp"
 #include "pellicle/pointcloud/orientation_sweep.hpp"
 
 namespace pellicle {
@@ -21,9 +22,7 @@ void propagate(const std::vector<Vec<D>>& x, long begin, long end, const std::ve
   for (long p = begin; p < end; ++p)
     if (fixed[p - begin]) settled.push_back(p);
   auto within_a_cell = [&](long p, auto&& visit) {
-    IVec<D> c;
-    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
-    groups.for_each_around(c, [&](int g) {
+    groups.for_each_around(groups.cell_of(x[p]), [&](int g) {
       for (const long* q = groups.begin(g); q != groups.end(g); ++q)
         if ((x[*q] - x[p]).squaredNorm() <= cell * cell) visit(*q);
     });
@@ -46,11 +45,9 @@ std::vector<int> sides_from_inside(const std::vector<Vec<D>>& x, long begin, lon
   if (inside.empty()) return side;
   const CellGroups<D> groups(inside, 0, static_cast<long>(inside.size()), Vec<D>::Zero(), cell);
   for (long p = begin; p < end; ++p) {
-    IVec<D> c;
-    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[p][d] / cell));
     Vec<D> sum = Vec<D>::Zero();
     long count = 0;
-    groups.for_each_around(c, [&](int g) {
+    groups.for_each_around(groups.cell_of(x[p]), [&](int g) {
       for (const long* q = groups.begin(g); q != groups.end(g); ++q)
         if ((inside[*q] - x[p]).squaredNorm() <= cell * cell) sum += inside[*q], ++count;
     });

@@ -1,20 +1,14 @@
 #include "pellicle/normals/principal_directions.hpp"
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
+
+#include "pellicle/pointcloud/weighted_moments.hpp"
+#include "pellicle/pointcloud/weights.hpp"
 
 namespace pellicle {
 
 namespace {
-
-template <int D>
-IVec<D> bucket(const Vec<D>& x, double size) {
-  IVec<D> c;
-  for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor(x[d] / size));
-  return c;
-}
 
 constexpr double kSpacings = 3.0;   //!< neighbourhood radius in nearest-neighbour spacings
 constexpr double kMostCells = 1.5;  //!< and at most this many cells
@@ -30,7 +24,7 @@ double median_spacing(const std::vector<Vec<D>>& x, double search) {
   for (long p = 0; p < n; ++p) {
     double best = search * search;
     bool found = false;
-    groups.for_each_around(bucket<D>(x[p], search), [&](int g) {
+    groups.for_each_around(groups.cell_of(x[p]), [&](int g) {
       for (const long* q = groups.begin(g); q != groups.end(g); ++q) {
         const double d2 = (x[*q] - x[p]).squaredNorm();
         if (*q != p && d2 <= best) best = d2, found = true;
@@ -52,23 +46,16 @@ PrincipalDirections<D>::PrincipalDirections(const std::vector<Vec<D>>& cloud, do
 template <int D>
 Vec<D> PrincipalDirections<D>::least_spread(long p) const {
   const Vec<D>& x = cloud_[p];
-  double weight = 0.0;
-  Vec<D> mean = Vec<D>::Zero();
-  Mat<D> second = Mat<D>::Zero();
-  groups_.for_each_around(bucket<D>(x, radius_), [&](int g) {
+  WeightedMoments<D, true> moments;
+  groups_.for_each_around(groups_.cell_of(x), [&](int g) {
     for (const long* q = groups_.begin(g); q != groups_.end(g); ++q) {
       const Vec<D> d = cloud_[*q] - x;  // about x: no cancellation far from the origin
       const double s = d.squaredNorm() / (radius_ * radius_);
       if (s >= 1.0) continue;
-      const double w = (1 - s) * (1 - s);
-      weight += w;
-      mean += w * d;
-      second += w * d * d.transpose();
+      moments.add(d, compact_weight(s));
     }
   });
-  mean /= weight;
-  const Mat<D> covariance = second / weight - mean * mean.transpose();
-  return Eigen::SelfAdjointEigenSolver<Mat<D>>(covariance).eigenvectors().col(0);
+  return least_spread_direction<D>(moments.matrix());
 }
 
 template class PrincipalDirections<2>;

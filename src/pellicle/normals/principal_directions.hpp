@@ -1,7 +1,8 @@
 #pragma once
 //! Principal directions of a membrane's points at the scale of their spacing. The normal at a
 //! point is the direction of least spread of its neighbours within a radius r, weighted by
-//! (1 − (d/r)²)², about their weighted mean. The radius follows the points: three times
+//! (1 − (d/r)²)², about their weighted mean (pointcloud/weighted_moments.hpp, the moments
+//! the surfaces' eq 4 normals also take). The radius follows the points: three times
 //! their median nearest-neighbour distance, at most 1.5 cells. At that scale the frames
 //! follow the membrane from point to point, as the connectivity estimator's x_{p+1} − x_{p−1}
 //! does; a radius of a cell or more averages over the folds a slack membrane forms, and the
@@ -11,7 +12,7 @@
 #include <vector>
 
 #include "pellicle/core/types.hpp"
-#include "pellicle/normals/cell_groups.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 namespace pellicle {
 

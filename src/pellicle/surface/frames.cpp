@@ -5,43 +5,17 @@
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/loop_failure.hpp"
 #include "pellicle/pointcloud/orientation_sweep.hpp"
+#include "pellicle/pointcloud/weighted_moments.hpp"
 
 namespace pellicle {
 
 namespace {
 
-//! A unit vector orthogonal to n: `previous` projected into the plane normal to n when it
-//! lies off the normal, else the coordinate axis least aligned with n.
-Vec3 tangent_in_plane(const Vec3& n, const Vec3& previous) {
-  Vec3 t = previous - previous.dot(n) * n;
-  if (t.squaredNorm() > 1e-6) return t.normalized();
-  int axis = 0;
-  n.cwiseAbs().minCoeff(&axis);
-  t = Vec3::Unit(axis) - n[axis] * n;
-  return t.normalized();
-}
-
-template <int D>
-Mat<D> frame_from(const Vec<D>& n, const Vec<D>& first_tangent_hint) {
-  Mat<D> f;
-  if constexpr (D == 2) {
-    (void)first_tangent_hint;
-    f.col(0) = Vec2(n.y(), -n.x());  // (t, n) right-handed
-    f.col(1) = n;
-  } else {
-    const Vec3 t1 = tangent_in_plane(n, first_tangent_hint);
-    f.col(0) = t1;
-    f.col(1) = n.cross(t1);
-    f.col(2) = n;
-  }
-  return f;
-}
-
 //! The eq 4 matrix Σ W d dᵀ/|d|² over the neighbours of i (only boundary ones if asked).
 template <int D>
 Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, std::size_t i,
                         double c, bool boundary_only, int& used) {
-  Mat<D> m = Mat<D>::Zero();
+  WeightedMoments<D, false> m;
   used = 0;
   const Vec<D>& x = cloud.position[i];
   const double h = cloud.smoothing_length[i];
@@ -51,10 +25,10 @@ Mat<D> direction_matrix(const PointCloud<D>& cloud, const NeighbourLists& nb, st
     const Vec<D> d = cloud.position[j] - x;
     const double r2 = d.squaredNorm();
     if (r2 == 0.0) continue;
-    m += gaussian_weight(r2, h, c) / r2 * d * d.transpose();
+    m.add(d, gaussian_weight(r2, h, c) / r2);
     ++used;
   }
-  return m;
+  return m.matrix();
 }
 
 //! Boundary neighbours whose second spread is above this share of the first lie along two
@@ -69,17 +43,6 @@ constexpr double kCornerSpread = 0.3;
 }
 
 }  // namespace
-
-template <int D>
-void set_normal(Mat<D>& f, const Vec<D>& n) {
-  f = frame_from<D>(n, f.col(0));
-}
-
-template <int D>
-void flip_normal(Mat<D>& f) {
-  f.col(D - 1) = -f.col(D - 1);
-  f.col(D - 2) = -f.col(D - 2);  // keeps det = +1
-}
 
 template <int D>
 void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const FrameOptions& options,
@@ -121,8 +84,7 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& nb, const Frame
       }
     }
     if (!done) {
-      Eigen::SelfAdjointEigenSolver<Mat<D>> solver(m);
-      normal = solver.eigenvectors().col(0);  // smallest eigenvalue first
+      normal = least_spread_direction<D>(m);
       if constexpr (D == 2) {
         if (cloud.boundary[i]) boundary_normal = Vec2(normal.y(), -normal.x());
       } else if (cloud.boundary[i]) {
@@ -177,10 +139,6 @@ void orient_consistently(PointCloud<D>& cloud, const NeighbourLists& nb,
       });
 }
 
-template void set_normal<2>(Mat<2>&, const Vec2&);
-template void set_normal<3>(Mat<3>&, const Vec3&);
-template void flip_normal<2>(Mat<2>&);
-template void flip_normal<3>(Mat<3>&);
 template void estimate_frames<2>(PointCloud<2>&, const NeighbourLists&, const FrameOptions&, bool);
 template void estimate_frames<3>(PointCloud<3>&, const NeighbourLists&, const FrameOptions&, bool);
 template void orient_consistently<2>(PointCloud<2>&, const NeighbourLists&,

@@ -2,22 +2,18 @@
 //! Normals and tangents of a point cloud (Suchde & Kuhnert §3.2): the normal n_i minimises
 //! the weighted sum of cos² of the angles between n_i and the directions to the neighbours
 //! (eq 4), the tangents complete an orthonormal frame; boundary points also get the boundary
-//! normal ν. The orientation is made consistent once by a sweep through the cloud and kept
-//! afterwards by n_new · n_old > 0 (eq 5).
+//! normal ν. The frames are pointcloud/local_frame.hpp's (set_normal, flip_normal there).
+//! The orientation is made consistent once by a sweep through the cloud and kept afterwards
+//! by n_new · n_old > 0 (eq 5).
 
-#include <cmath>
 #include <vector>
 
+#include "pellicle/pointcloud/local_frame.hpp"
 #include "pellicle/pointcloud/neighbour_search.hpp"
+#include "pellicle/pointcloud/weights.hpp"
 #include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {
-
-//! Gaussian weight of a neighbour at distance r from a point of smoothing length h,
-//! W = exp(−c r²/h²), used by the normals (eq 4) and the GFDM stencils (eqs 19, 27).
-inline double gaussian_weight(double r_squared, double h, double c) {
-  return std::exp(-c * r_squared / (h * h));
-}
 
 struct FrameOptions {
   double weight_exponent = 2.0;  //!< c of the Gaussian weight
@@ -38,13 +34,5 @@ void estimate_frames(PointCloud<D>& cloud, const NeighbourLists& neighbours,
 template <int D>
 void orient_consistently(PointCloud<D>& cloud, const NeighbourLists& neighbours,
                          const std::vector<Vec<D>>* reference = nullptr);
-
-//! Give a frame the normal n (unit), continuing its first tangent into the new tangent plane.
-template <int D>
-void set_normal(Mat<D>& frame, const Vec<D>& n);
-
-//! Reverse the normal of a frame, keeping it right-handed.
-template <int D>
-void flip_normal(Mat<D>& frame);
 
 }  // namespace pellicle

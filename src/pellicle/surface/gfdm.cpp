@@ -7,7 +7,8 @@
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/loop_failure.hpp"
-#include "pellicle/surface/local_fit.hpp"
+#include "pellicle/pointcloud/local_fit.hpp"
+#include "pellicle/surface/frames.hpp"
 
 namespace pellicle {
 

@@ -2,14 +2,14 @@
 //! Interpolation of what the points carry to a new place, for points created in holes and
 //! points merged into one (Suchde & Kuhnert §3.4–3.5): a second-order moving least-squares
 //! fit in the tangent plane of the place's frame. It is the constrained weighted least
-//! squares of the GFDM stencils (local_fit.hpp, eqs 18–19) with the value at the centre as
-//! the only target (b = e_0): the coefficients reproduce every monomial up to order 2 in the
+//! squares of the GFDM stencils (pointcloud/local_fit.hpp, eqs 18–19) with the value at the centre
+//! as the only target (b = e_0): the coefficients reproduce every monomial up to order 2 in the
 //! tangent coordinates, so quadratic fields on a plane are interpolated exactly.
 
 #include <vector>
 
+#include "pellicle/pointcloud/local_fit.hpp"
 #include "pellicle/pointcloud/neighbour_search.hpp"
-#include "pellicle/surface/local_fit.hpp"
 #include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {

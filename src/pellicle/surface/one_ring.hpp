@@ -10,8 +10,8 @@
 
 #include <limits>
 
+#include "pellicle/pointcloud/local_fit.hpp"
 #include "pellicle/pointcloud/neighbour_search.hpp"
-#include "pellicle/surface/local_fit.hpp"
 #include "pellicle/surface/point_cloud.hpp"
 
 namespace pellicle {

@@ -1,15 +1,20 @@
 #pragma once
-//! The local constrained weighted least squares behind every GFDM stencil (Suchde & Kuhnert
-//! eqs 18–19 and 26–27) and every interpolation to a new point: around a centre with a
-//! tangent frame and a smoothing length h, find coefficients c_k of the neighbours' values
-//! that reproduce a linear functional (a derivative at the centre, or the value there) of
-//! every monomial up to order 2 in the tangent coordinates, minimising Σ_k (c_k / W_k)².
-//! Header-only so the fixed-size loops inline where they are used.
+//! The point-cloud layer's weighted local least-squares fit: a polynomial of order 2 in the
+//! tangent coordinates of a local frame (local_frame.hpp), fitted to a centre's neighbours
+//! with Gaussian weights. It is the constrained weighted least squares behind every GFDM
+//! stencil (Suchde & Kuhnert eqs 18–19 and 26–27) and every moving-least-squares
+//! interpolation to a new point: around a centre with a tangent frame and a smoothing length
+//! h, find coefficients c_k of the neighbours' values that reproduce a linear functional (a
+//! derivative at the centre, or the value there) of every monomial up to order 2 in the
+//! tangent coordinates, minimising Σ_k (c_k / W_k)². (The membranes' isosurface fits,
+//! normals/isosurface.hpp, are not of this kind: unweighted, in grid-cell B-splines rather
+//! than a local frame, solved for nodal values by a rank-revealing QR.) Header-only so the
+//! fixed-size loops inline where they are used.
 
 #include <Eigen/QR>
 
 #include "pellicle/core/types.hpp"
-#include "pellicle/surface/frames.hpp"
+#include "pellicle/pointcloud/weights.hpp"
 
 namespace pellicle {
 
@@ -60,7 +65,7 @@ inline const char* describe(FitStatus s) {
 //! A = W M = Q R (M the monomials at the neighbours, W their Gaussian weights). With
 //! `FlatSlopes` = m > 0 the fitted quadratic has zero slope along the first m tangents at
 //! the centre, exactly: their linear monomials are left out of M (and b must not ask for
-//! those slopes). That is how a zero-flux boundary enters a fit (gfdm.cpp).
+//! those slopes). That is how a zero-flux boundary enters a fit (surface/gfdm.cpp).
 template <int D, int M, int FlatSlopes = 0>
 FitStatus fit_coefficients(const Vec<D>* offsets, int count,
                            const Eigen::Matrix<double, D, D - 1>& tangents, double h,

@@ -1,6 +1,10 @@
 #pragma once
-//! Membrane points grouped by the grid cell that holds them: the local normal constructions
-//! work cell by cell.
+//! Cell grouping of points: the points of a set grouped by the cell of a regular grid that
+//! holds them, and the occupied cells around a cell. The membranes' local normal constructions
+//! (normals/) work cell by cell on the background grid; their neighbourhood walks (orientation,
+//! principal directions) look up the points of the 3^D cells around a point. Unlike the k-d tree
+//! of neighbour_search.hpp, it visits points cell by cell in a fixed order, the order those
+//! constructions' sums are taken in.
 
 #include <cmath>
 #include <cstdint>
@@ -20,6 +24,12 @@ class CellGroups {
   CellGroups(const std::vector<Vec<D>>& x, long begin, long end, const Vec<D>& origin, double h);
 
   int size() const { return static_cast<int>(cells_.size()); }
+  //! The cell holding x (not checked: for places near the grouped points).
+  IVec<D> cell_of(const Vec<D>& x) const {
+    IVec<D> c;
+    for (int d = 0; d < D; ++d) c[d] = static_cast<int>(std::floor((x[d] - origin_[d]) / h_));
+    return c;
+  }
   const IVec<D>& cell(int group) const { return cells_[group]; }
   //! Points of a group (absolute indices).
   const long* begin(int group) const { return order_.data() + starts_[group]; }
@@ -66,6 +76,8 @@ class CellGroups {
   }
 
  private:
+  Vec<D> origin_;
+  double h_;
   std::vector<long> order_;
   std::vector<long> starts_;
   std::vector<IVec<D>> cells_;

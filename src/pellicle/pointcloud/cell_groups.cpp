@@ -1,4 +1,4 @@
-#include "pellicle/normals/cell_groups.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,11 @@ namespace pellicle {
 
 template <int D>
 CellGroups<D>::CellGroups(const std::vector<Vec<D>>& x, long begin, long end, const Vec<D>& origin,
-                          double h) {
+                          double h)
+    : origin_(origin), h_(h) {
   const long n = end - begin;
   std::vector<std::pair<std::int64_t, long>> keyed(n);
-  std::vector<IVec<D>> cell_of(n);
+  std::vector<IVec<D>> cell_of_point(n);
   for (long i = 0; i < n; ++i) {
     IVec<D> c;
     for (int d = 0; d < D; ++d) {
@@ -23,7 +24,7 @@ CellGroups<D>::CellGroups(const std::vector<Vec<D>>& x, long begin, long end, co
                                     "grid origin");
       c[d] = static_cast<int>(cell);
     }
-    cell_of[i] = c;
+    cell_of_point[i] = c;
     keyed[i] = {key(c), begin + i};
   }
   std::sort(keyed.begin(), keyed.end());
@@ -32,7 +33,7 @@ CellGroups<D>::CellGroups(const std::vector<Vec<D>>& x, long begin, long end, co
     order_[i] = keyed[i].second;
     if (i == 0 || keyed[i].first != keyed[i - 1].first) {
       index_[keyed[i].first] = static_cast<int>(cells_.size());
-      cells_.push_back(cell_of[keyed[i].second - begin]);
+      cells_.push_back(cell_of_point[keyed[i].second - begin]);
       starts_.push_back(i);
     }
   }
