@@ -27,12 +27,26 @@ def scalar(fields, name, path):
     return data if data.ndim == 1 else np.linalg.norm(data, axis=1)
 
 
-def plot(snapshots, field, elevation, azimuth, per_panel, out):
-    """Draw the panels with one colour scale for all of them, or one each (per_panel)."""
+def far_half(points, elevation, azimuth):
+    """The points on the far side of the plane through the cloud's centre facing the viewer
+    (as the paper shows its joining spheres): a cut through the surface."""
+    e, a = np.radians(elevation), np.radians(azimuth)
+    toward_viewer = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+    centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
+    return (points - centre) @ toward_viewer < 0.0
+
+
+def plot(snapshots, field, elevation, azimuth, per_panel, out, half=False):
+    """Draw the panels with one colour scale for all of them, or one each (per_panel); with
+    half, only the far half of each cloud."""
     frames = []
     for time, path in snapshots:
         points, fields = read_vtp(path)
-        frames.append((time, points, scalar(fields, field, path)))
+        values = scalar(fields, field, path)
+        if half:
+            keep = far_half(points, elevation, azimuth)
+            points, values = points[keep], values[keep]
+        frames.append((time, points, values))
     low = min(np.nanmin(v) for _, _, v in frames)
     high = max(np.nanmax(v) for _, _, v in frames)
     columns = min(3, len(frames))
@@ -66,7 +80,8 @@ def main():
     parser = argparse.ArgumentParser(
         description="3D pictures of a surface run's points coloured by a point field.",
         epilog="Fields written by Pellicle's surface runs include phi, curvature, velocity, "
-               "normal, smoothing_length, boundary and, with an exact solution, exact and error.")
+               "normal, smoothing_length, boundary, chamber and, with an exact solution, exact "
+               "and error.")
     parser.add_argument("input", metavar="RESULTS_DIR_OR_VTP",
                         help="results directory holding surface.pvd, a .pvd file or a .vtp file")
     parser.add_argument("--field", default="curvature", help="field to colour by (default: curvature)")
@@ -76,6 +91,9 @@ def main():
     parser.add_argument("--azimuth", type=float, default=-60.0, help="view azimuth, degrees")
     parser.add_argument("--scale", choices=("shared", "panel"), default="shared",
                         help="one colour scale for all panels (default) or one per panel")
+    parser.add_argument("--half", action="store_true",
+                        help="only the half of the points away from the viewer (a cut, to see "
+                             "inside: contact between surfaces)")
     parser.add_argument("--out", metavar="PNG", help="output (default: <dir>/surface_<field>.png)")
     args = parser.parse_args()
     path = os.path.join(args.input, "surface.pvd") if os.path.isdir(args.input) else args.input
@@ -87,7 +105,8 @@ def main():
         else:
             snapshots = select_snapshots(read_pvd(path), args.snapshot, path)
         out = args.out or os.path.join(os.path.dirname(path), f"surface_{args.field}.png")
-        plot(snapshots, args.field, args.elevation, args.azimuth, args.scale == "panel", out)
+        plot(snapshots, args.field, args.elevation, args.azimuth, args.scale == "panel", out,
+             args.half)
     except InputError as err:
         parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
     except OSError as err:
