@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <vector>
+
+#include "pellicle/pointcloud/union_find.hpp"
 
 namespace pellicle {
 
@@ -72,35 +73,13 @@ long top_up_parts(const PointCloud<D>& cloud, const NeighbourSearch<D>& search,
   return still_short;
 }
 
-namespace {
-
-//! Union–find with path halving, the smaller root kept.
-class Components {
- public:
-  explicit Components(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int root(int i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(int a, int b) {
-    a = root(a);
-    b = root(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
-}  // namespace
-
 template <int D>
 ChamberReport split_chambers(PointCloud<D>& cloud, const NeighbourLists& own,
                              const NeighbourLists& external, long smallest_part) {
   const std::size_t n = cloud.size();
   // Parts: linked through S_i. Chambers: linked within h, S_i or S_i^ext, in one chamber
   // (two spheres that delete contact joined are one chamber though kept apart as parts).
-  Components parts(n), chambers(n);
+  UnionFind parts(n), chambers(n);
   for (std::size_t i = 0; i < n && i < own.points(); ++i)
     for (long k = own.begin(i); k < own.end(i); ++k) {
       parts.join(static_cast<int>(i), own.index[k]);

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
+#include "pellicle/pointcloud/union_find.hpp"
 #include "pellicle/surface/signed_distance.hpp"
 
 namespace pellicle {
@@ -79,31 +79,6 @@ int nearest_patch(const PointCloud<D>& cloud, const NeighbourLists& external, st
   return nearest;
 }
 
-//! Chamber ids joined by union–find over the ids (path halving), relabelled to each set's
-//! smallest id.
-class ChamberJoins {
- public:
-  explicit ChamberJoins(const std::vector<int>& chamber) {
-    const int top = chamber.empty() ? 0 : *std::max_element(chamber.begin(), chamber.end());
-    parent_.resize(top + 1);
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  bool join(int a, int b) {
-    a = root(a);
-    b = root(b);
-    if (a == b) return false;
-    parent_[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
-  int root(int a) {
-    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
-    return a;
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
 }  // namespace
 
 template <int D>
@@ -158,7 +133,10 @@ ContactReport resolve_contacts(PointCloud<D>& cloud, const NeighbourLists& own,
   }
 
   // Responses, in point order.
-  ChamberJoins joins(cloud.chamber);
+  // Chamber ids joined by responses, each set relabelled to its smallest id.
+  UnionFind joins(cloud.chamber.empty()
+                      ? 0
+                      : *std::max_element(cloud.chamber.begin(), cloud.chamber.end()) + 1);
   std::vector<std::uint8_t> remove(n, 0), merged(n, 0);
   for (long i = 0; i < n; ++i) {
     const Detected<D>& d = found[i];
