@@ -524,7 +524,7 @@ TEST_F(SurfaceShapeFiles, ShapesReadFromTables) {
             (std::vector<std::string>{"circle", "ellipse", "implicit-blobs", "dumbbell"}));
   EXPECT_EQ(surface_shape_kinds<3>(),
             (std::vector<std::string>{"sphere", "ellipsoid", "torus", "half-pipe", "implicit-blobs",
-                                      "mesh", "dumbbell"}));
+                                      "mesh", "dumbbell", "tube"}));
 }
 
 TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
@@ -532,7 +532,7 @@ TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
   EXPECT_FALSE(unknown);
   EXPECT_EQ(p1,
             "shape.toml:1:8: surface.shape.kind: expected one of \"sphere\", \"ellipsoid\", "
-            "\"torus\", \"half-pipe\", \"implicit-blobs\", \"mesh\" or \"dumbbell\", found the "
+            "\"torus\", \"half-pipe\", \"implicit-blobs\", \"mesh\", \"dumbbell\" or \"tube\", found the "
             "string "
             "\"spheroid\"\n");
   auto [circle3, p2] = read<3>("kind = \"circle\"\n");  // a 2D kind in 3D

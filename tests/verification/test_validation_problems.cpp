@@ -37,7 +37,8 @@
 //   surface-point-addition §3.7.4: midway placement below half the circumcentre's error,
 //                    faster than h²; the circumcentre's error second order
 //   curvature-flow   §4.2.3: a sphere under mean-curvature flow, R(t) within 2% of
-//                    sqrt(R0² − 2t) until R = 0.3 R0, and a circle in 2D; an ellipsoid
+//                    sqrt(R0² − 2t) until R = 0.3 R0, a circle in 2D and a cylinder
+//                    (sqrt(R0² − t), the middle of an open tube); an ellipsoid
 //                    under averaged flow keeps
 //                    its volume within 1% and is a sphere within 2% at t = 2.5
 //   joining-spheres  §3.7.3: non-penetration keeps the spheres within |v|Δt + r_min h of

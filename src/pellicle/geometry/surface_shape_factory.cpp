@@ -142,6 +142,23 @@ SurfaceShapePtr<D> read_blobs(ParameterReader& in, const std::string&) {
 }
 
 template <int D>
+SurfaceShapePtr<D> read_tube(ParameterReader& in, const std::string&) {
+  if constexpr (D == 3) {
+    const Vec3 c = in.has("center") ? read_vector<3>(in, "center") : Vec3(Vec3::Zero());
+    const double radius = in.number("radius", NumberRange::positive());
+    double length = in.number("length", NumberRange::positive());
+    if (radius > 0.0 && length > kSlenderest * radius) {
+      in.fail("length", "expected length at most " + describe_number(kSlenderest) +
+                            " radius (a longer tube is not sampled)");
+      length = radius;
+    }
+    return make_tube_shape(c, radius > 0.0 ? radius : 1.0, length > 0.0 ? length : 1.0);
+  } else {
+    return nullptr;  // not registered in 2D
+  }
+}
+
+template <int D>
 SurfaceShapePtr<D> read_dumbbell(ParameterReader& in, const std::string&) {
   const Vec<D> c = in.has("center") ? read_vector<D>(in, "center") : Vec<D>(Vec<D>::Zero());
   const double ball = in.number_or("ball_radius", 1.0, NumberRange::positive());
@@ -213,7 +230,7 @@ const std::vector<Kind<D>>& kinds() {
       {"ellipsoid", 3, &read_ellipsoid<D>},  {"ellipse", 2, &read_ellipsoid<D>},
       {"torus", 3, &read_torus<D>},          {"half-pipe", 3, &read_half_pipe<D>},
       {"implicit-blobs", 0, &read_blobs<D>}, {"mesh", 3, &read_mesh<D>},
-      {"dumbbell", 0, &read_dumbbell<D>},
+      {"dumbbell", 0, &read_dumbbell<D>},    {"tube", 3, &read_tube<D>},
   };
   return table;
 }

@@ -39,6 +39,10 @@ template <int D>
 SurfaceShapePtr<D> make_implicit_blobs(std::vector<Vec<D>> centers, std::vector<double> radii,
                                        double level);
 
+//! An open tube: the cylinder of radius `radius` about the z axis through `center`,
+//! |z − center_z| ≤ length/2; its boundary is the two end circles.
+SurfaceShapePtr<3> make_tube_shape(const Vec3& center, double radius, double length);
+
 //! The dumbbell of Suchde & Kuhnert §4.2.3: balls of radius `ball_radius` with centres
 //! `separation` apart along x about `center`, joined by a rod of radius `rod_radius` along x
 //! (rod_radius < ball_radius < separation / 2); the boundary of their union.
