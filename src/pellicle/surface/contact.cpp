@@ -28,6 +28,12 @@ ContactResponse ContactOptions::response(int a, int b) const {
   return a == b ? self : between;
 }
 
+bool ContactOptions::active() const {
+  return between != ContactResponse::none || self != ContactResponse::none ||
+         std::any_of(rules.begin(), rules.end(),
+                     [](const ContactRule& r) { return r.response != ContactResponse::none; });
+}
+
 bool ContactOptions::self_contact() const {
   if (self != ContactResponse::none) return true;
   return std::any_of(rules.begin(), rules.end(), [](const ContactRule& r) {

@@ -46,6 +46,7 @@ struct ContactOptions {
 
   ContactResponse response(int surface_a, int surface_b) const;
   bool self_contact() const;  //!< some surface's self-contact response is not none
+  bool active() const;        //!< some response is not none
 };
 
 struct ContactReport {

@@ -51,7 +51,7 @@ void SurfaceSimulation<D>::find_neighbours() {
       return;
     }
     split_by_part(cloud_, neighbours_, &external_);  // S_i and S_i^ext of §3.6
-    if (!contact_active()) {
+    if (!settings_.contact.active()) {
       top_up_parts(cloud_, search_, neighbours_, minimum, short_of_);
       return;
     }
@@ -210,17 +210,9 @@ void SurfaceSimulation<D>::advance_one_step() {
 }
 
 template <int D>
-bool SurfaceSimulation<D>::contact_active() const {
-  const ContactOptions& o = settings_.contact;
-  return o.between != ContactResponse::none || o.self != ContactResponse::none ||
-         std::any_of(o.rules.begin(), o.rules.end(),
-                     [](const ContactRule& r) { return r.response != ContactResponse::none; });
-}
-
-template <int D>
 void SurfaceSimulation<D>::resolve_contact() {
   last_contact_ = ContactReport{};
-  if (!contact_active() || external_.index.empty()) {
+  if (!settings_.contact.active() || external_.index.empty()) {
     std::fill(cloud_.contact_side.begin(), cloud_.contact_side.end(), 0);
     return;
   }

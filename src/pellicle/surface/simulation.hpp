@@ -114,7 +114,6 @@ class SurfaceSimulation {
   void find_neighbours();
   void average_curvature();
   void resolve_contact();
-  bool contact_active() const;
   void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
   void check_state() const;
   bool management_due() const;
