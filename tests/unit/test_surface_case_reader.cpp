@@ -91,6 +91,18 @@ TEST(SurfaceCaseReader, RejectedInputsNameTheKey) {
   expect_problem({"solver.preconditioner=\"amg\""}, "solver.preconditioner");
   expect_problem({"pde.boundary=\"dirichlet\""}, "boundary_value");
   expect_problem({"surface.shape={kind=\"cube\"}"}, "surface.shape.kind");
+  // Several surfaces and contact (§3.6).
+  const std::string both =
+      problems_of(kValid, {"surface.shapes=[{kind=\"sphere\",center=[3,0,0],radius=1.0}]"});
+  EXPECT_NE(both.find("surface.shapes: expected either `shape` (one surface) or `shapes`"),
+            std::string::npos)
+      << both;
+  EXPECT_EQ(both.find("unknown key"), std::string::npos) << both;  // one problem, not two
+  expect_problem({"surface.contact={between=\"glue\"}"},
+                 "surface.contact.between: expected one of");
+  expect_problem(
+      {"surface.contact={rules=[{surfaces=[\"surface\",\"other\"],response=\"merge\"}]}"},
+      "surface.contact.rules[0].surfaces: expected two surface names out of: surface");
   expect_problem({"surface.colour=1"}, "surface.colour");  // unknown key
 }
 

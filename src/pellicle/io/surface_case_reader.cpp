@@ -63,11 +63,12 @@ template <int D>
 void read_shapes(TomlParameters& s, SurfaceCase<D>& c) {
   std::string base = std::filesystem::path(c.file).parent_path().string();
   if (base.empty()) base = ".";
-  if (s.has("shape") && s.has("shapes")) {
+  const bool several = s.has("shapes");
+  if (s.has("shape") && several) {
     s.fail("shapes", "expected either `shape` (one surface) or `shapes` (several), not both");
     s.take("shapes");
   }
-  if (!s.has("shapes")) {
+  if (!several || s.has("shape")) {
     if (auto shape = s.sub_table("shape", true))
       c.surfaces.push_back({"surface", make_surface_shape<D>(*shape, base)});
     return;
