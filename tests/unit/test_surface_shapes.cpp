@@ -530,11 +530,12 @@ TEST_F(SurfaceShapeFiles, ShapesReadFromTables) {
 TEST_F(SurfaceShapeFiles, BadInputNamesTheKey) {
   auto [unknown, p1] = read<3>("kind = \"spheroid\"\nradius = 1\n");
   EXPECT_FALSE(unknown);
-  EXPECT_EQ(p1,
-            "shape.toml:1:8: surface.shape.kind: expected one of \"sphere\", \"ellipsoid\", "
-            "\"torus\", \"half-pipe\", \"implicit-blobs\", \"mesh\", \"dumbbell\" or \"tube\", found the "
-            "string "
-            "\"spheroid\"\n");
+  EXPECT_EQ(
+      p1,
+      "shape.toml:1:8: surface.shape.kind: expected one of \"sphere\", \"ellipsoid\", "
+      "\"torus\", \"half-pipe\", \"implicit-blobs\", \"mesh\", \"dumbbell\" or \"tube\", found the "
+      "string "
+      "\"spheroid\"\n");
   auto [circle3, p2] = read<3>("kind = \"circle\"\n");  // a 2D kind in 3D
   EXPECT_FALSE(circle3);
   EXPECT_NE(p2.find("surface.shape.kind: expected one of"), std::string::npos) << p2;

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 
 #include "pellicle/surface/quadrature.hpp"
@@ -73,7 +74,8 @@ Outcome surface_joining_spheres(Resolution resolution) {
       const double centre = 1.1 - 0.5 * s.time();
       const double rim = centre < 1.0 ? std::sqrt(1.0 - centre * centre) : 0.0;
       inside = std::max(inside, beyond_the_contact_plane(s, rim - h));
-      anywhere = std::max(anywhere, beyond_the_contact_plane(s, 1e300));
+      anywhere =
+          std::max(anywhere, beyond_the_contact_plane(s, std::numeric_limits<double>::infinity()));
     }
     std::snprintf(text, sizeof text,
                   "| non-penetration | %g | %zu | farthest beyond the contact plane x = 0: %.3g h "
