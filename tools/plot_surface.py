@@ -36,12 +36,19 @@ def far_half(points, elevation, azimuth):
     return (points - centre) @ toward_viewer < 0.0
 
 
-def plot(snapshots, field, elevation, azimuth, per_panel, out, half=False):
+# Display axes (left-right, front-back, up) for each choice of the upward coordinate: a cyclic
+# permutation, so the picture is not mirrored.
+AXES_FOR_UP = {"z": (0, 1, 2), "y": (2, 0, 1), "x": (1, 2, 0)}
+
+
+def plot(snapshots, field, elevation, azimuth, per_panel, out, half=False, up="z"):
     """Draw the panels with one colour scale for all of them, or one each (per_panel); with
-    half, only the far half of each cloud."""
+    half, only the far half of each cloud; `up` is the coordinate drawn upward."""
+    order = AXES_FOR_UP[up]
     frames = []
     for time, path in snapshots:
         points, fields = read_vtp(path)
+        points = points[:, order]
         values = scalar(fields, field, path)
         if half:
             keep = far_half(points, elevation, azimuth)
@@ -67,9 +74,9 @@ def plot(snapshots, field, elevation, azimuth, per_panel, out, half=False):
         ax.set_box_aspect((1, 1, 1))
         ax.view_init(elev=elevation, azim=azimuth)
         ax.set_title(f"t = {time:g}, {len(points)} points", fontsize=10)
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
-        ax.set_zlabel("z")
+        ax.set_xlabel("xyz"[order[0]])
+        ax.set_ylabel("xyz"[order[1]])
+        ax.set_zlabel("xyz"[order[2]])
     if not per_panel:
         fig.colorbar(drawn, ax=fig.axes, shrink=0.6, label=field)
     fig.savefig(out, dpi=110)
@@ -89,6 +96,8 @@ def main():
                         help=f"position in surface.pvd, 'last' (default) or 'all' (up to {MAX_PANELS})")
     parser.add_argument("--elevation", type=float, default=25.0, help="view elevation, degrees")
     parser.add_argument("--azimuth", type=float, default=-60.0, help="view azimuth, degrees")
+    parser.add_argument("--up", choices=("x", "y", "z"), default="z",
+                        help="coordinate drawn upward (default: z)")
     parser.add_argument("--scale", choices=("shared", "panel"), default="shared",
                         help="one colour scale for all panels (default) or one per panel")
     parser.add_argument("--half", action="store_true",
@@ -106,7 +115,7 @@ def main():
             snapshots = select_snapshots(read_pvd(path), args.snapshot, path)
         out = args.out or os.path.join(os.path.dirname(path), f"surface_{args.field}.png")
         plot(snapshots, args.field, args.elevation, args.azimuth, args.scale == "panel", out,
-             args.half)
+             args.half, args.up)
     except InputError as err:
         parser.exit(2, f"{parser.prog}: error: {err.path}: {err.problem}\n")
     except OSError as err:

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <random>
 
+#include "pellicle/pointcloud/local_frame.hpp"
 #include "pellicle/surface/chambers.hpp"
 #include "pellicle/surface/contact.hpp"
+#include "pellicle/surface/gfdm.hpp"
 #include "pellicle/surface/signed_distance.hpp"
 #include "support/test_clouds.hpp"
 
@@ -155,6 +157,46 @@ TEST(Chambers, PiecesSmallerThanTheSmallestPartAreRemoved) {
   EXPECT_EQ(r.split, 0);
   EXPECT_EQ(c.size(), sphere);
   EXPECT_EQ(c.chamber_count(), 1);
+}
+
+// A sheet folded back onto itself along x = 0, as eq 52 leaves a band it crushes: the lower
+// half z = −0.02 (normals −z) and the upper z = +0.02 (normals +z), both x ≤ 0, one chamber.
+// With self-contact the halves are two parts, and the points near x = 0 have one-sided
+// neighbourhoods. Every Laplacian must still have a negative centre (a stable implicit row:
+// the fold's stencil, zero flux across the rim) and stay exact for quadratics with no slope
+// at the point, whose flux across the rim is zero: Δ((x − x_i)² + (y − y_i)²) = 4.
+TEST(Folds, PointsOnTheRimOfTheirPartGetStableLaplacians) {
+  const double h = 0.2;
+  PointCloud<3> c;
+  for (const int side : {-1, 1}) {  // about 30 points within h
+    const PointCloud<3> sheet = test::random_patch(1000, h, 0.0, side > 0 ? 4 : 3);
+    for (const Vec3& x : sheet.position) {
+      if (x.x() > 0.0) continue;
+      const std::size_t k = c.add_point(Vec3(x.x(), x.y(), 0.02 * side), h, false);
+      if (side < 0) flip_normal<3>(c.frame[k]);
+    }
+  }
+  c.facing_limit = 0.0;
+  ASSERT_TRUE(c.has_parts());
+  NeighbourSearch<3> search;
+  NeighbourLists own, external;
+  search.find(c, own);
+  split_by_part(c, own, &external);
+  SurfaceStencils<3> st;
+  build_stencils<3>(c, own, GfdmOptions{}, st);
+  int rim = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    EXPECT_LT(st.laplacian[own.begin(i)], 0.0)
+        << "point " << i << " at " << c.position[i].transpose();
+    double quadratic = 0.0;
+    for (long k = own.begin(i); k < own.end(i); ++k) {
+      const Vec3 d = c.position[own.index[k]] - c.position[i];
+      quadratic += st.laplacian[k] * (d.x() * d.x() + d.y() * d.y());
+    }
+    EXPECT_NEAR(quadratic, 4.0, 1e-8) << "point " << i;
+    rim += c.position[i].x() > -0.25 * h && std::abs(c.position[i].y()) < 0.8;
+  }
+  EXPECT_GT(rim, 20);  // the rim is there to test
 }
 
 //! Two sheets after a step in which they crossed: sheet 0 was below (side −1 against the

@@ -42,7 +42,7 @@ struct ContactOptions {
   std::vector<ContactRule> rules;
   //! Points of one chamber whose normals have n_i·n_j below this are facing parts
   //! (PointCloud::facing_limit), when some self-contact response is not none.
-  double facing_limit = -0.5;
+  double facing_limit = 0.0;
 
   ContactResponse response(int surface_a, int surface_b) const;
   bool self_contact() const;  //!< some surface's self-contact response is not none

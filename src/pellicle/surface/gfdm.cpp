@@ -34,21 +34,30 @@ struct WeightLadder {
                            "the cloud there)");
 }
 
-//! How far a Laplacian stencil (column `col` of c, row 0 the point itself) is from a row of
-//! an M-matrix: Σ_{j≠i} max(0, −c_j) / |c_i|, infinite when c_i is not negative.
+//! How far a fit is from making a stable implicit row: the Laplacian stencil's (column `col`
+//! of c, row 0 the point itself) distance from a row of an M-matrix, Σ_{j≠i} max(0, −c_j) /
+//! |c_i|, infinite when c_i is not negative; or, when larger, the gradient stencil's size
+//! h Σ_j |c^∇_j| (columns before `col`) against `gradient_limit`, scaled so that reaching it
+//! counts as much as a share of kMaxNegativeShare (a neighbourhood nearly on a line in some
+//! direction: ∇_M · v, and with it the row's diagonal, would be noise amplified).
+constexpr double kNoGradientLimit = std::numeric_limits<double>::infinity();
+
 template <int D, int M>
-double negative_share(const FitCoefficients<D, M>& c, int count, int col) {
+double instability(const FitCoefficients<D, M>& c, int count, int col, double gradient_limit) {
   if (!(c(0, col) < 0.0)) return std::numeric_limits<double>::infinity();
-  double negative = 0.0;
-  for (int k = 1; k < count; ++k) negative += std::max(0.0, -c(k, col));
-  return negative / -c(0, col);
+  double negative = 0.0, gradient = 0.0;
+  for (int k = 0; k < count; ++k) {
+    if (k > 0) negative += std::max(0.0, -c(k, col));
+    gradient += c.row(k).head(col).norm();  // the targets of ∂/∂t carry h (build_stencils)
+  }
+  return std::max(negative / -c(0, col), kMaxNegativeShare * gradient / gradient_limit);
 }
 
-//! Fits `attempt(k, c)` for k = 0, 1, … until one's Laplacian (column `col`) has a negative
-//! share of at most kMaxNegativeShare; otherwise keeps the one with the smallest share.
+//! Fits `attempt(k, c)` for k = 0, 1, … until one's instability (Laplacian in column `col`)
+//! is at most kMaxNegativeShare; otherwise keeps the least unstable one.
 template <int D, int M, class Attempt>
-FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D, M>& c,
-                             Attempt attempt) {
+FitStatus most_stable_fit(int attempts, int count, int col, double gradient_limit,
+                          FitCoefficients<D, M>& c, Attempt attempt) {
   FitCoefficients<D, M> trial;
   FitStatus status = FitStatus::degenerate;
   double best = std::numeric_limits<double>::infinity();
@@ -58,7 +67,7 @@ FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D
       if (status != FitStatus::ok) status = s;
       continue;
     }
-    const double share = negative_share<D, M>(trial, count, col);
+    const double share = instability<D, M>(trial, count, col, gradient_limit);
     if (status != FitStatus::ok || share < best) {
       c = trial;
       best = share;
@@ -76,24 +85,23 @@ FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D
 //! to be recognised as a corner, the corner's fit as the last resort
 //! (docs/theory/surface-gfdm.md, "Boundary points").
 template <int D>
-FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>* offsets,
-                              int count, double h, const WeightLadder& ladder,
-                              const FitTargets<D, 1>& laplacian, double* coefficients) {
+FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>& nu,
+                              bool corner, const Vec<D>* offsets, int count, double h,
+                              const WeightLadder& ladder, const FitTargets<D, 1>& laplacian,
+                              double* coefficients) {
   constexpr int T = D - 1;
   Eigen::Matrix<double, D, T> along = cloud.frame[i].template leftCols<T>();
   if constexpr (D == 3) {
     const Vec3 n = cloud.normal(i);
-    const Vec3 nu = cloud.boundary_normal[i];
     const Vec3 across = (nu - nu.dot(n) * n).normalized();
     along.col(0) = across;
     along.col(1) = n.cross(across);
   }
-  const bool corner = cloud.corner[i] != 0;
   // Edges: the ladder with one slope fixed, then the corner's fit under the broadest weight.
   const int attempts = ladder.size + (corner ? 0 : 1);
   FitCoefficients<D, 1> c;
-  const FitStatus status =
-      least_negative_fit<D, 1>(attempts, count, 0, c, [&](int k, FitCoefficients<D, 1>& out) {
+  const FitStatus status = most_stable_fit<D, 1>(
+      attempts, count, 0, kNoGradientLimit, c, [&](int k, FitCoefficients<D, 1>& out) {
         const double exponent = ladder.exponent[std::min(k, ladder.size - 1)];
         if (corner || k == ladder.size)
           return fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, out);
@@ -102,6 +110,26 @@ FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const V
   if (status == FitStatus::ok)
     for (int k = 0; k < count; ++k) coefficients[k] = c(k, 0);
   return status;
+}
+
+//! Δ_T at a point on the rim of its part, where contact splits a surface that folds onto
+//! itself (the sheet beyond the fold is another part, S_i^ext): the neighbourhood is
+//! one-sided and no weight gives a Laplacian with a negative centre. The point takes the
+//! boundary point's Laplacian, zero flux across the rim, with ν pointing away from its
+//! neighbours (docs/theory/surface-contact.md, "Folds"); where even that is not negative
+//! the stencil stays as it is and the repair removes the point (simulation.cpp).
+template <int D>
+void fold_laplacian(const PointCloud<D>& cloud, std::size_t i, const Vec<D>* offsets, int count,
+                    double h, const WeightLadder& ladder, const FitTargets<D, 1>& target,
+                    double* laplacian, double* zero_flux) {
+  Vec<D> toward = Vec<D>::Zero();
+  for (int k = 1; k < count; ++k) toward += offsets[k];
+  const Vec<D> n = cloud.normal(i);
+  const Vec<D> nu = (toward.dot(n) * n - toward).eval();
+  if (!(nu.norm() > 1e-12 * h)) return;
+  if (zero_flux_laplacian<D>(cloud, i, Vec<D>(nu.normalized()), false, offsets, count, h, ladder,
+                             target, zero_flux) == FitStatus::ok)
+    std::copy(zero_flux, zero_flux + count, laplacian);
 }
 
 }  // namespace
@@ -115,6 +143,9 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
   st.laplacian.resize(nb.index.size());
   st.zero_flux_laplacian.resize(nb.index.size());
   const WeightLadder ladder(options);
+  // Gradients are held to kMaxGradientSum only where contact splits the cloud into parts
+  // (folds); elsewhere the Laplacian's share alone decides, as it always has.
+  const double gradient_limit = cloud.has_parts() ? kMaxGradientSum : kNoGradientLimit;
   LoopFailure failure;
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) {
@@ -138,11 +169,11 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     // one: their rows use the zero-flux Laplacian below.
     FitCoefficients<D, T + 1> c;
     const FitStatus status =
-        least_negative_fit<D, T + 1>(cloud.boundary[i] ? 1 : ladder.size, count, T, c,
-                                     [&](int k, FitCoefficients<D, T + 1>& out) {
-                                       return fit_coefficients<D, T + 1>(
-                                           offsets, count, tangents, h, ladder.exponent[k], b, out);
-                                     });
+        most_stable_fit<D, T + 1>(cloud.boundary[i] ? 1 : ladder.size, count, T, gradient_limit, c,
+                                  [&](int k, FitCoefficients<D, T + 1>& out) {
+                                    return fit_coefficients<D, T + 1>(offsets, count, tangents, h,
+                                                                      ladder.exponent[k], b, out);
+                                  });
     if (status != FitStatus::ok) {
       failure.record(i, static_cast<int>(status));
       continue;
@@ -154,10 +185,16 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
       st.laplacian[slot] = c(k, T);  // rotation invariant: c^{Δ_M} = c^{Δ_T}
       st.zero_flux_laplacian[slot] = c(k, T);
     }
-    if (!cloud.boundary[i]) continue;
-    const FitStatus zero_flux =
-        zero_flux_laplacian<D>(cloud, i, offsets, count, h, ladder, b.template rightCols<1>(),
-                               st.zero_flux_laplacian.data() + nb.begin(i));
+    if (!cloud.boundary[i]) {
+      if (cloud.has_parts() && !(c(0, T) < 0.0))
+        fold_laplacian<D>(cloud, i, offsets, count, h, ladder, b.template rightCols<1>(),
+                          st.laplacian.data() + nb.begin(i),
+                          st.zero_flux_laplacian.data() + nb.begin(i));
+      continue;
+    }
+    const FitStatus zero_flux = zero_flux_laplacian<D>(
+        cloud, i, cloud.boundary_normal[i], cloud.corner[i] != 0, offsets, count, h, ladder,
+        b.template rightCols<1>(), st.zero_flux_laplacian.data() + nb.begin(i));
     if (zero_flux != FitStatus::ok) failure.record(i, static_cast<int>(zero_flux));
   }
   if (failure.failed())

@@ -183,24 +183,11 @@ void SurfaceSimulation<D>::advance_one_step() {
   update_geometry(true);  // 3. frames keep their side (eq 5)
   resolve_contact();      // 3b. §3.6
   bool changed = last_contact_.changed();
-  if (settings_.manage && management_due()) {  // 4. §3.4–3.5
-    const ManagementReport r =
-        manage_points(cloud_, search_, settings_.management, settings_.frames);
-    managed_at_ = cloud_.position;
-    managed_generation_ = cloud_.generation();
-    management_total_.added += r.added;
-    management_total_.merged += r.merged;
-    management_total_.removed += r.removed;
-    changed = changed || r.changed();
-  }
+  if (settings_.manage && management_due()) changed = manage() || changed;  // 4. §3.4–3.5
   if (changed) update_geometry(true);
-  if (pde_) {  // 5. implicit step with ∇_M · v⁽ⁿ⁺¹⁾
-    evaluate_velocity(time_, next_velocity_);
-    const long n = static_cast<long>(cloud_.size());
-    divergence_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i)
-      divergence_[i] = surface_divergence(neighbours_, stencils_, i, next_velocity_);
+  if (pde_) {         // 5. implicit step
+    surface_rates();  // v⁽ⁿ⁺¹⁾ and ∇_M · v⁽ⁿ⁺¹⁾
+    if (settings_.contact.active()) remove_unresolved();  // §3.6 repair
     pde_->advance(*this, dt, divergence_);
   }
   ++steps_;
@@ -223,6 +210,61 @@ void SurfaceSimulation<D>::resolve_contact() {
   contact_total_.projected += last_contact_.projected;
   contact_total_.removed += last_contact_.removed;
   contact_total_.joined += last_contact_.joined;
+}
+
+template <int D>
+bool SurfaceSimulation<D>::manage() {
+  const ManagementReport r = manage_points(cloud_, search_, settings_.management, settings_.frames);
+  managed_at_ = cloud_.position;
+  managed_generation_ = cloud_.generation();
+  management_total_.added += r.added;
+  management_total_.merged += r.merged;
+  management_total_.removed += r.removed;
+  return r.changed();
+}
+
+template <int D>
+void SurfaceSimulation<D>::surface_rates() {
+  evaluate_velocity(time_, next_velocity_);
+  const long n = static_cast<long>(cloud_.size());
+  divergence_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    divergence_[i] = surface_divergence(neighbours_, stencils_, i, next_velocity_);
+}
+
+template <int D>
+void SurfaceSimulation<D>::remove_unresolved() {
+  // Points where the PDE's implicit row would amplify instead of damp: a Laplacian whose
+  // centre coefficient is not negative even under the broadest weight and, at the rim of a
+  // part, with zero flux across it (gfdm.cpp) — a fold or thread narrower than the cloud;
+  // and a point whose area would vanish within the step, Δt ∇_M · v ≤ −1 — a band the
+  // velocity crushes (docs/theory/surface-contact.md, "Folds"). They go like the repair's
+  // thread points; point management then fills the gap from the sheets around it. A few
+  // rounds, as a removal can expose others.
+  const double dt = settings_.dt;
+  for (int round = 0; round < 8; ++round) {
+    short_of_.assign(cloud_.size(), 0);
+    long count = 0;
+    for (std::size_t i = 0; i < cloud_.size(); ++i) {
+      const bool unresolved =
+          !cloud_.boundary[i] && !(stencils_.laplacian[neighbours_.begin(i)] < 0.0);
+      const bool crushed = !(dt * divergence_[i] > -1.0);
+      if (unresolved || crushed) {
+        short_of_[i] = 1;
+        ++count;
+      }
+    }
+    if (count == 0) return;
+    debris_ += count;
+    cloud_.remove_points(short_of_);
+    if (settings_.manage) {
+      update_geometry(true);
+      manage();
+    }
+    update_geometry(true);
+    surface_rates();
+  }
 }
 
 template <int D>

@@ -87,7 +87,8 @@ class SurfaceSimulation {
   //! What contact detection found and did at the last step, and in total.
   const ContactReport& last_contact() const { return last_contact_; }
   const ContactReport& contact_total() const { return contact_total_; }
-  //! Points removed by the repair after contact: pieces too small to carry a normal.
+  //! Points removed by the repair after contact: pieces too small to carry a normal, and
+  //! points at folds no stencil resolves (remove_unresolved).
   long debris_removed() const { return debris_; }
   const SurfaceStencils<D>& stencils() const { return stencils_; }
   SurfacePde<D>* pde() const { return pde_.get(); }
@@ -114,6 +115,9 @@ class SurfaceSimulation {
   void find_neighbours();
   void average_curvature();
   void resolve_contact();
+  bool manage();         //!< point management (§3.4–3.5); true when it changed the cloud
+  void surface_rates();  //!< v⁽ⁿ⁺¹⁾ at the points and its surface divergence
+  void remove_unresolved();
   void evaluate_velocity(double t, std::vector<Vec<D>>& v) const;
   void check_state() const;
   bool management_due() const;

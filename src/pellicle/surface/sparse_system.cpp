@@ -45,12 +45,14 @@ LinearSolveReport run(Solver& solver, const SparseSystem::Solver::Matrix& a,
 }
 
 [[noreturn]] void unstable_row(long i, double diagonal) {
-  char text[512];
+  char text[640];
   std::snprintf(text, sizeof text,
                 "row %ld of the implicit step has the diagonal %.3g: the step would amplify the "
                 "value at point %ld instead of damping it (its Laplacian stencil's centre "
-                "coefficient is positive and large: a sparse, one-sided neighbourhood); refine "
-                "the cloud there or lower the time step",
+                "coefficient is positive and large: a sparse, one-sided neighbourhood; or the "
+                "surface divergence of the velocity is below -1/dt: the surface is crushed "
+                "there); refine the cloud there or lower the time step, and where the surface "
+                "folds onto itself turn on self-contact (surface.contact.self)",
                 i, diagonal, i);
   throw NumericalError({0.0, 0, "surface", i}, text);
 }

@@ -76,6 +76,7 @@ Outcome surface_curvature_flow(Resolution resolution);
 Outcome surface_joining_spheres(Resolution resolution);
 Outcome surface_dumbbell_pinch(Resolution resolution);
 Outcome surface_torus_genus(Resolution resolution);
+Outcome surface_wave_collapse(Resolution resolution);
 Outcome surface_wave_sphere(Resolution resolution);
 Outcome surface_half_pipe(Resolution resolution);
 Outcome laplace_spectrum(Resolution resolution);
