@@ -34,30 +34,21 @@ struct WeightLadder {
                            "the cloud there)");
 }
 
-//! How far a fit is from making a stable implicit row: the Laplacian stencil's (column `col`
-//! of c, row 0 the point itself) distance from a row of an M-matrix, Σ_{j≠i} max(0, −c_j) /
-//! |c_i|, infinite when c_i is not negative; or, when larger, the gradient stencil's size
-//! h Σ_j |c^∇_j| (columns before `col`) against `gradient_limit`, scaled so that reaching it
-//! counts as much as a share of kMaxNegativeShare (a neighbourhood nearly on a line in some
-//! direction: ∇_M · v, and with it the row's diagonal, would be noise amplified).
-constexpr double kNoGradientLimit = std::numeric_limits<double>::infinity();
-
+//! How far a Laplacian stencil (column `col` of c, row 0 the point itself) is from a row of
+//! an M-matrix: Σ_{j≠i} max(0, −c_j) / |c_i|, infinite when c_i is not negative.
 template <int D, int M>
-double instability(const FitCoefficients<D, M>& c, int count, int col, double gradient_limit) {
+double negative_share(const FitCoefficients<D, M>& c, int count, int col) {
   if (!(c(0, col) < 0.0)) return std::numeric_limits<double>::infinity();
-  double negative = 0.0, gradient = 0.0;
-  for (int k = 0; k < count; ++k) {
-    if (k > 0) negative += std::max(0.0, -c(k, col));
-    gradient += c.row(k).head(col).norm();  // the targets of ∂/∂t carry h (build_stencils)
-  }
-  return std::max(negative / -c(0, col), kMaxNegativeShare * gradient / gradient_limit);
+  double negative = 0.0;
+  for (int k = 1; k < count; ++k) negative += std::max(0.0, -c(k, col));
+  return negative / -c(0, col);
 }
 
-//! Fits `attempt(k, c)` for k = 0, 1, … until one's instability (Laplacian in column `col`)
-//! is at most kMaxNegativeShare; otherwise keeps the least unstable one.
+//! Fits `attempt(k, c)` for k = 0, 1, … until one's Laplacian (column `col`) has a negative
+//! share of at most kMaxNegativeShare; otherwise keeps the one with the smallest share.
 template <int D, int M, class Attempt>
-FitStatus most_stable_fit(int attempts, int count, int col, double gradient_limit,
-                          FitCoefficients<D, M>& c, Attempt attempt) {
+FitStatus least_negative_fit(int attempts, int count, int col, FitCoefficients<D, M>& c,
+                             Attempt attempt) {
   FitCoefficients<D, M> trial;
   FitStatus status = FitStatus::degenerate;
   double best = std::numeric_limits<double>::infinity();
@@ -67,7 +58,7 @@ FitStatus most_stable_fit(int attempts, int count, int col, double gradient_limi
       if (status != FitStatus::ok) status = s;
       continue;
     }
-    const double share = instability<D, M>(trial, count, col, gradient_limit);
+    const double share = negative_share<D, M>(trial, count, col);
     if (status != FitStatus::ok || share < best) {
       c = trial;
       best = share;
@@ -100,8 +91,8 @@ FitStatus zero_flux_laplacian(const PointCloud<D>& cloud, std::size_t i, const V
   // Edges: the ladder with one slope fixed, then the corner's fit under the broadest weight.
   const int attempts = ladder.size + (corner ? 0 : 1);
   FitCoefficients<D, 1> c;
-  const FitStatus status = most_stable_fit<D, 1>(
-      attempts, count, 0, kNoGradientLimit, c, [&](int k, FitCoefficients<D, 1>& out) {
+  const FitStatus status =
+      least_negative_fit<D, 1>(attempts, count, 0, c, [&](int k, FitCoefficients<D, 1>& out) {
         const double exponent = ladder.exponent[std::min(k, ladder.size - 1)];
         if (corner || k == ladder.size)
           return fit_coefficients<D, 1, T>(offsets, count, along, h, exponent, laplacian, out);
@@ -143,9 +134,7 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
   st.laplacian.resize(nb.index.size());
   st.zero_flux_laplacian.resize(nb.index.size());
   const WeightLadder ladder(options);
-  // Gradients are held to kMaxGradientSum only where contact splits the cloud into parts
-  // (folds); elsewhere the Laplacian's share alone decides, as it always has.
-  const double gradient_limit = cloud.has_parts() ? kMaxGradientSum : kNoGradientLimit;
+  const bool parts = cloud.has_parts();  // contact splits the neighbourhoods (folds below)
   LoopFailure failure;
 #pragma omp parallel for schedule(dynamic, 256)
   for (long i = 0; i < n; ++i) {
@@ -169,11 +158,11 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
     // one: their rows use the zero-flux Laplacian below.
     FitCoefficients<D, T + 1> c;
     const FitStatus status =
-        most_stable_fit<D, T + 1>(cloud.boundary[i] ? 1 : ladder.size, count, T, gradient_limit, c,
-                                  [&](int k, FitCoefficients<D, T + 1>& out) {
-                                    return fit_coefficients<D, T + 1>(offsets, count, tangents, h,
-                                                                      ladder.exponent[k], b, out);
-                                  });
+        least_negative_fit<D, T + 1>(cloud.boundary[i] ? 1 : ladder.size, count, T, c,
+                                     [&](int k, FitCoefficients<D, T + 1>& out) {
+                                       return fit_coefficients<D, T + 1>(
+                                           offsets, count, tangents, h, ladder.exponent[k], b, out);
+                                     });
     if (status != FitStatus::ok) {
       failure.record(i, static_cast<int>(status));
       continue;
@@ -186,7 +175,7 @@ void build_stencils(const PointCloud<D>& cloud, const NeighbourLists& nb,
       st.zero_flux_laplacian[slot] = c(k, T);
     }
     if (!cloud.boundary[i]) {
-      if (cloud.has_parts() && !(c(0, T) < 0.0))
+      if (parts && !(c(0, T) < 0.0))
         fold_laplacian<D>(cloud, i, offsets, count, h, ladder, b.template rightCols<1>(),
                           st.laplacian.data() + nb.begin(i),
                           st.zero_flux_laplacian.data() + nb.begin(i));

@@ -24,14 +24,10 @@ struct GfdmOptions {
 
 //! The broadest weight a stencil falls back to (gfdm.cpp): a Laplacian whose negative
 //! off-diagonal coefficients outweigh kMaxNegativeShare of its (negative) centre
-//! coefficient, or whose centre coefficient is not negative, or, on a cloud split into parts
-//! by contact, a gradient stencil whose coefficients sum to more than kMaxGradientSum / h in
-//! magnitude, is fitted again under broader weights (4, then this), and the most stable one
-//! kept. On a resolved cloud h Σ|c^∇| is about 5, so kMaxGradientSum catches neighbourhoods
-//! that are nearly a line in some direction (a fold, a collapsing neck).
+//! coefficient, or whose centre coefficient is not negative, is fitted again under broader
+//! weights (4, then this), and the least negative one kept.
 constexpr double kBroadWeightExponent = 2.0;
 constexpr double kMaxNegativeShare = 0.5;
-constexpr double kMaxGradientSum = 40.0;
 
 //! Stencil coefficients aligned with the neighbour lists they were built on: entry k of
 //! point i's list holds the coefficients of u_j, j = index[k].

@@ -131,7 +131,7 @@ class SurfaceSimulation {
   NeighbourLists external_;
   ContactReport last_contact_, contact_total_;
   long debris_ = 0;
-  std::vector<std::uint8_t> short_of_;  //!< scratch of the repair (find_neighbours)
+  std::vector<std::uint8_t> short_of_;  //!< scratch of the repairs (points to remove)
   SurfaceStencils<D> stencils_;
   SparseSystem system_;
   std::vector<double> curvature_, divergence_;
