@@ -87,8 +87,9 @@ class SurfaceSimulation {
   //! What contact detection found and did at the last step, and in total.
   const ContactReport& last_contact() const { return last_contact_; }
   const ContactReport& contact_total() const { return contact_total_; }
-  //! Points removed by the repair after contact: pieces too small to carry a normal, and
-  //! points at folds no stencil resolves (remove_unresolved).
+  //! Points removed by the repair after contact: pieces too small to carry a normal, threads,
+  //! and with a PDE points at folds no stencil resolves or in bands the velocity crushes
+  //! (remove_unresolved).
   long debris_removed() const { return debris_; }
   const SurfaceStencils<D>& stencils() const { return stencils_; }
   SurfacePde<D>* pde() const { return pde_.get(); }
