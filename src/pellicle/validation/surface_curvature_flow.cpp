@@ -88,9 +88,9 @@ Outcome surface_curvature_flow(Resolution resolution) {
   // R(t)² = R0² − t. An open tube 6 long stands in for it; its ends round off, and the radius
   // is measured in its middle third, |z| < 1, which they do not reach before R = 0.3 R0 (a
   // tube 4 long was 3 % off there, 6 long 0.15 %).
-  const std::vector<double> tube_lengths =
+  const std::vector<double> tube_resolutions =
       resolution == Resolution::full ? std::vector<double>{0.2, 0.15} : std::vector<double>{0.2};
-  for (const double h : tube_lengths) {
+  for (const double h : tube_resolutions) {
     auto run = builtin_surface<3>("surface_mean_curvature_sphere.toml",
                                   {"surface.shape={kind=\"tube\", radius=1.0, length=6.0}",
                                    setting("surface.smoothing_length", h),
