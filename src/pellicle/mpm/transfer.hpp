@@ -56,10 +56,12 @@ class Transfer {
   //! (Jiang et al. 2015); zero for the other velocity updates.
   virtual double affine_kinetic_energy(const Particles<D>& points, const Grid<D>& grid) const = 0;
 
-  //! Bytes of the per-point stencil cache.
+  //! Bytes per point the transfer keeps between stages (the stencil anchors).
   virtual std::size_t stencil_bytes() const = 0;
 
-  //! Stage `stencils`: node ids, weights and gradients of every point at its current position.
+  //! Stage `stencils`: fix this step's stencils (node ids, weights, gradients) at the points'
+  //! current positions; every stage of the step uses them, also after to_points has moved
+  //! the points.
   virtual void compute_stencils(const Particles<D>& points, const Grid<D>& grid) = 0;
 
   //! Stage `to_grid`: zero the grid, then scatter mass and momentum (with the APIC affine
@@ -87,7 +89,8 @@ class Transfer {
   virtual void node_weights(const Particles<D>& points, const Grid<D>& grid, long begin, long end,
                             long* nodes, double* weights) const = 0;
 
-  //! Grid nodes the points [begin, end) touch (N_i > 0), each listed once, appended to `nodes`.
+  //! Grid nodes the points [begin, end) touch (N_i > 0) with this step's stencils, each listed
+  //! once, appended to `nodes`.
   virtual void touched_nodes(const Grid<D>& grid, long begin, long end,
                              std::vector<long>& nodes) const = 0;
 

@@ -53,14 +53,14 @@ class TransferImpl final : public Transfer<D> {
   }
 
   std::size_t stencil_bytes() const override {
-    return sizeof(Stencil<D, Kernel>);
+    return sizeof(StencilAnchor<D>);
   }
 
   void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
     const long n = points.size();
-    stencils_.resize(n);
+    anchors_.resize(n);
 #pragma omp parallel for schedule(static)
-    for (long p = 0; p < n; ++p) compute_stencil(kernel_, grid, points.position[p], stencils_[p]);
+    for (long p = 0; p < n; ++p) anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
   }
 
   void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
@@ -113,7 +113,7 @@ class TransferImpl final : public Transfer<D> {
                      std::vector<long>& nodes) const override {
     const std::size_t first = nodes.size();
     for (long p = begin; p < end; ++p)
-      for_each_node(stencils_[p], grid.strides(),
+      for_each_node(stencil(grid, p), grid.strides(),
                     [&](long node, double N, const Vec<D>&, const IVec<D>&) {
                       if (N > 0.0) nodes.push_back(node);
                     });
@@ -143,7 +143,7 @@ class TransferImpl final : public Transfer<D> {
     for (long p = range.begin; p < n; ++p) {
       Mat<D> L = Mat<D>::Zero();
       double v_radial = 0.0;
-      for_each_node(stencils_[p], strides,
+      for_each_node(stencil(grid, p), strides,
                     [&](long node, double N, const Vec<D>& grad, const IVec<D>&) {
                       L += grid.velocity[node] * grad.transpose();
                       if (axisymmetric) v_radial += N * grid.velocity[node][0];
@@ -189,11 +189,13 @@ class TransferImpl final : public Transfer<D> {
     const double h = grid.cell();
     const double inertia_scale =
         Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
-    double max_speed = 0.0;
+    double max_speed_squared = 0.0;  // one square root at the end: √ is monotonic
     long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) reduction(max : max_speed) reduction(min : first_bad)
+#pragma omp parallel for schedule(static) reduction(max                                \
+                                                    : max_speed_squared) reduction(min \
+                                                                                   : first_bad)
     for (long p = range.begin; p < n; ++p) {
-      const auto& s = stencils_[p];
+      const Stencil<D, Kernel> s = stencil(grid, p);
       Vec<D> v_lagrangian = Vec<D>::Zero();
       Vec<D> v_change = Vec<D>::Zero();
       Mat<D> affine = Mat<D>::Zero();
@@ -239,7 +241,7 @@ class TransferImpl final : public Transfer<D> {
       points.velocity[p] = v;
       if (apic_update) affine_out[p] = affine;
       if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
-      max_speed = std::max(max_speed, v.norm());
+      max_speed_squared = std::max(max_speed_squared, v.squaredNorm());
     }
     if (first_bad != std::numeric_limits<long>::max()) {
       failure.point = first_bad;
@@ -248,7 +250,7 @@ class TransferImpl final : public Transfer<D> {
               ? "the point left the grid domain"
               : "non-finite position or velocity";
     }
-    return max_speed;
+    return std::sqrt(max_speed_squared);
   }
 
   template <class T>
@@ -281,7 +283,7 @@ class TransferImpl final : public Transfer<D> {
       long lo = std::numeric_limits<long>::max(), hi = -1;
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p) {
-        const auto& s = stencils_[p];
+        const Stencil<D, Kernel> s = stencil(grid, p);
         const double m = points.mass[p];
         const Vec<D> mv = m * points.velocity[p];
         Mat<D> stress_volume;  // V_p σ_p, in-plane part
@@ -325,11 +327,18 @@ class TransferImpl final : public Transfer<D> {
     return offset;
   }
 
+  //! This step's stencil of point p, rebuilt from its anchor (docs/theory/performance.md).
+  Stencil<D, Kernel> stencil(const Grid<D>& grid, long p) const {
+    Stencil<D, Kernel> s;
+    expand_stencil(kernel_, grid, anchors_[p], s);
+    return s;
+  }
+
   TransferOptions options_;
   Column<Mat<D>> affine_;  //!< APIC only: C_p
   Column<double> heat_;    //!< APIC with a thermal model: dissipated energy per mass
   Kernel kernel_;
-  std::vector<Stencil<D, Kernel>> stencils_;
+  std::vector<StencilAnchor<D>> anchors_;  //!< per point, at the step's start positions
   ScatterBuffers<D> buffers_;
 };
 

@@ -5,7 +5,8 @@
 //! first node index of the stencil and `width` weights and weight derivatives.
 //!
 //! Coordinates are in cell units: ξ = (x − origin)/h. Derivatives returned are dφ/dξ; the
-//! stencil scales them by 1/h.
+//! stencil scales them by 1/h. `first(ξ)` is the first node, `weights(ξ, first, …)` the
+//! weights of the nodes from it on, and `fill` both.
 
 #include <cmath>
 
@@ -19,6 +20,10 @@ struct Linear {
   static constexpr const char* name = "linear";
   //! APIC uses the gradient form C = Σ v_i ⊗ ∇N_i for this kernel (see docs/theory).
   static constexpr double apic_inertia = 0.0;
+  inline int first(double xi) const { return linear_bspline_first(xi); }
+  inline void weights(double xi, int first, double* w, double* dw) const {
+    linear_bspline_weights(xi, first, w, dw);
+  }
   inline int fill(double xi, double* w, double* dw) const { return linear_bspline(xi, w, dw); }
 };
 
@@ -47,13 +52,17 @@ struct UGimp {
     if (a < 1.0 + l) return -s * (1.0 + l - a) / (2.0 * l);
     return 0.0;
   }
-  inline int fill(double xi, double* w, double* dw) const {
-    const int base = static_cast<int>(std::floor(xi + 0.5)) - 1;
+  inline int first(double xi) const { return floor_to_int(xi + 0.5) - 1; }
+  inline void weights(double xi, int first, double* w, double* dw) const {
     for (int a = 0; a < width; ++a) {
-      const double r = xi - (base + a);
+      const double r = xi - (first + a);
       w[a] = phi(r);
       dw[a] = dphi(r);
     }
+  }
+  inline int fill(double xi, double* w, double* dw) const {
+    const int base = first(xi);
+    weights(xi, base, w, dw);
     return base;
   }
 };
@@ -63,6 +72,10 @@ struct QuadraticBSpline {
   static constexpr int width = 3;
   static constexpr const char* name = "quadratic-bspline";
   static constexpr double apic_inertia = 0.25;
+  inline int first(double xi) const { return quadratic_bspline_first(xi); }
+  inline void weights(double xi, int first, double* w, double* dw) const {
+    quadratic_bspline_weights(xi, first, w, dw);
+  }
   inline int fill(double xi, double* w, double* dw) const { return quadratic_bspline(xi, w, dw); }
 };
 
@@ -71,6 +84,10 @@ struct CubicBSpline {
   static constexpr int width = 4;
   static constexpr const char* name = "cubic-bspline";
   static constexpr double apic_inertia = 1.0 / 3.0;
+  inline int first(double xi) const { return cubic_bspline_first(xi); }
+  inline void weights(double xi, int first, double* w, double* dw) const {
+    cubic_bspline_weights(xi, first, w, dw);
+  }
   inline int fill(double xi, double* w, double* dw) const { return cubic_bspline(xi, w, dw); }
 };
 

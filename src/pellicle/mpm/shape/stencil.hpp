@@ -1,8 +1,9 @@
 #pragma once
 //! The per-point stencil of a kernel: the first node it touches, and per axis the 1D weights
-//! and weight derivatives. Computed once per step (DESIGN: stage `stencils`) and reused by
-//! every transfer of that step. The D-dimensional weight of node (a, b[, c]) of the stencil
-//! is w[0][a]·w[1][b]·w[2][c]; its gradient is the product rule over the axes.
+//! and weight derivatives. Fixed once per step (DESIGN: stage `stencils`) as an anchor per
+//! point, from which every transfer of that step rebuilds it. The D-dimensional weight of node (a,
+//! b[, c]) of the stencil is w[0][a]·w[1][b]·w[2][c]; its gradient is the product rule over the
+//! axes.
 
 #include <array>
 #include <type_traits>
@@ -22,19 +23,46 @@ struct Stencil {
   double dw[D][width];  //!< 1D derivatives dφ/dx (already divided by h)
 };
 
+//! What a stage needs to rebuild a point's stencil quickly: its coordinates in cell units and
+//! its first node per axis. Kept per point between the stages of a step (the stencil itself
+//! is 3–7 times larger; storing it and reading it back costs more than rebuilding it).
+template <int D>
+struct StencilAnchor {
+  double xi[D];  //!< ξ = (x − origin)/h
+  int first[D];  //!< first node of the stencil per axis
+};
+
+template <int D, class Kernel>
+inline StencilAnchor<D> stencil_anchor(const Kernel& kernel, const Grid<D>& grid, const Vec<D>& x) {
+  const Vec<D> xi = grid.to_cell_units(x);
+  StencilAnchor<D> a;
+  for (int d = 0; d < D; ++d) {
+    a.xi[d] = xi[d];
+    a.first[d] = kernel.first(xi[d]);
+  }
+  return a;
+}
+
+//! The stencil of an anchor.
+template <int D, class Kernel>
+inline void expand_stencil(const Kernel& kernel, const Grid<D>& grid, const StencilAnchor<D>& a,
+                           Stencil<D, Kernel>& s) {
+  const double inv_h = 1.0 / grid.cell();
+  IVec<D> first;
+  for (int d = 0; d < D; ++d) {
+    first[d] = a.first[d];
+    kernel.weights(a.xi[d], a.first[d], s.w[d], s.dw[d]);
+    s.offset[d] = a.first[d] - a.xi[d];
+    for (int b = 0; b < Kernel::width; ++b) s.dw[d][b] *= inv_h;
+  }
+  s.base = grid.flatten(first);
+}
+
 //! Fill the stencil of a point at x.
 template <int D, class Kernel>
 inline void compute_stencil(const Kernel& kernel, const Grid<D>& grid, const Vec<D>& x,
                             Stencil<D, Kernel>& s) {
-  const Vec<D> xi = grid.to_cell_units(x);
-  const double inv_h = 1.0 / grid.cell();
-  IVec<D> first;
-  for (int d = 0; d < D; ++d) {
-    first[d] = kernel.fill(xi[d], s.w[d], s.dw[d]);
-    s.offset[d] = first[d] - xi[d];
-    for (int a = 0; a < Kernel::width; ++a) s.dw[d][a] *= inv_h;
-  }
-  s.base = grid.flatten(first);
+  expand_stencil(kernel, grid, stencil_anchor(kernel, grid, x), s);
 }
 
 //! Visit every node of a stencil: f(node, N, ∇N, a) where a is the node's offset within the
