@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 #include "pellicle/core/error.hpp"
@@ -58,13 +59,21 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   // density and energy: settle them once before the first step (a zero step changes nothing
   // else).
   update_frames();
-  velocity_gradient_.assign(points_.size(), Mat<D>::Zero());
-  if (settings_.kinematics == Kinematics::axisymmetric) hoop_rate_.assign(points_.size(), 0.0);
-  for (const auto& body : points_.bodies) {
+  for (int b = 0; b < static_cast<int>(points_.bodies.size()); ++b) {
+    const auto& body = points_.bodies[b];
+    for (long first = body.begin; first < body.end; first += kBlockPoints)
+      blocks_.push_back({b, first, std::min(first + kBlockPoints, body.end)});
     const auto& material = *materials_[body.material];
-    if (material.stress_from_state())
-      material.update({points_, velocity_gradient_, hoop_rate_, 0.0, body.begin, body.end,
-                       this->grid().cell()});
+    if (!material.stress_from_state()) continue;
+    const std::vector<Mat<D>> no_gradient(body.count(), Mat<D>::Zero());
+    const std::vector<double> no_hoop_rate(body.count(), 0.0);
+    material.update({points_,
+                     {no_gradient.data(), body.begin},
+                     {no_hoop_rate.data(), body.begin},
+                     0.0,
+                     body.begin,
+                     body.end,
+                     this->grid().cell()});
   }
 }
 
@@ -192,25 +201,83 @@ void Simulation<D>::remap(double dt) {
 
 template <int D>
 void Simulation<D>::materials(double dt) {
-  for (int k = 0; k < fields_.count(); ++k) {
-    const long bad = transfer_->point_kinematics(fields_.field(k), dt, points_, velocity_gradient_,
-                                                 hoop_rate_, fields_.points(k));
-    if (bad >= 0) fail(bad, "non-positive or non-finite density");
-  }
-  if (!cell_density_ranges_.empty())  // fluids with cell densities (thesis eq 4.6)
-    cell_quadratic_density(grid(), settings_.kinematics == Kinematics::axisymmetric,
-                           cell_density_ranges_, points_);
-  update_frames();  // membrane frames at the current positions (thesis §5.3 step 7)
-  for (const auto& body : points_.bodies) {
-    if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
-      std::fill(points_.stress.begin() + body.begin, points_.stress.begin() + body.end,
-                Sym<D>::Zero());
-      continue;
+  update_frames();  // membrane frames at the new positions (thesis §5.3 step 7)
+  if (!cell_density_ranges_.empty()) settle_cell_densities(dt);
+  const bool axisymmetric = settings_.kinematics == Kinematics::axisymmetric;
+  const int threads = omp_get_max_threads();
+  if (static_cast<int>(block_scratch_.size()) < threads) {
+    block_scratch_.resize(threads);
+    for (auto& scratch : block_scratch_) {
+      scratch.gradient.resize(kBlockPoints);
+      if (axisymmetric) scratch.hoop_rate.resize(kBlockPoints);
     }
-    const auto& material = *materials_[body.material];
-    material.update(
-        {points_, velocity_gradient_, hoop_rate_, dt, body.begin, body.end, grid().cell()});
-    const auto check = material.check_points(points_, body.begin, body.end, grid().cell());
+  }
+  // Per block of points, the kinematics and the material update, so the velocity gradient is
+  // used while it is in the cache and never stored for every point.
+  long first_bad = std::numeric_limits<long>::max();
+#pragma omp parallel reduction(min : first_bad)
+  {
+    BlockScratch& scratch = block_scratch_[omp_get_thread_num()];
+#pragma omp for schedule(static)
+    for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
+      const PointBlock& block = blocks_[i];
+      const auto& body = points_.bodies[block.body];
+      const Material<D>& material = *materials_[body.material];
+      BlockValues<Mat<D>> gradient(settled_gradient_);
+      BlockValues<double> hoop_rate(settled_hoop_rate_);
+      if (!material.density_from_cells()) {
+        const long bad = transfer_->point_kinematics(
+            fields_.field(fields_.per_body() ? block.body : 0), dt, points_, block.begin, block.end,
+            scratch.gradient.data(), scratch.hoop_rate.data());
+        if (bad >= 0) {
+          first_bad = std::min(first_bad, bad);
+          continue;
+        }
+        gradient = {scratch.gradient.data(), block.begin};
+        hoop_rate = {scratch.hoop_rate.data(), block.begin};
+      }
+      if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
+        std::fill(points_.stress.begin() + block.begin, points_.stress.begin() + block.end,
+                  Sym<D>::Zero());
+        continue;
+      }
+      material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
+    }
+  }
+  if (first_bad != std::numeric_limits<long>::max())
+    fail(first_bad, "non-positive or non-finite density");
+  check_materials();
+}
+
+template <int D>
+void Simulation<D>::settle_cell_densities(double dt) {
+  // Fluids with cell densities (thesis eq 4.6): the velocity gradients of their points first,
+  // kept for the materials stage, then their densities from the cells.
+  settled_gradient_.resize(points_.size());
+  if (settings_.kinematics == Kinematics::axisymmetric) settled_hoop_rate_.resize(points_.size());
+  long first_bad = std::numeric_limits<long>::max();
+#pragma omp parallel for schedule(static) reduction(min : first_bad)
+  for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
+    const PointBlock& block = blocks_[i];
+    if (!materials_[points_.bodies[block.body].material]->density_from_cells()) continue;
+    const long bad = transfer_->point_kinematics(
+        fields_.field(fields_.per_body() ? block.body : 0), dt, points_, block.begin, block.end,
+        settled_gradient_.data() + block.begin,
+        settled_hoop_rate_.empty() ? nullptr : settled_hoop_rate_.data() + block.begin);
+    if (bad >= 0) first_bad = std::min(first_bad, bad);
+  }
+  if (first_bad != std::numeric_limits<long>::max())
+    fail(first_bad, "non-positive or non-finite density");
+  cell_quadratic_density(grid(), settings_.kinematics == Kinematics::axisymmetric,
+                         cell_density_ranges_, points_);
+}
+
+template <int D>
+void Simulation<D>::check_materials() {
+  for (const auto& body : points_.bodies) {
+    if (time_ >= body.cut_at) continue;
+    const auto check =
+        materials_[body.material]->check_points(points_, body.begin, body.end, grid().cell());
     if (check.invalid >= 0) fail(check.invalid, check.why);
     if (check.spacing > 1.0 && !thinned_.count(body.name)) {
       thinned_.insert(body.name);  // once per body
@@ -302,17 +369,21 @@ double Simulation<D>::max_signal_speed() const {
 
 template <int D>
 std::size_t Simulation<D>::memory_estimate_bytes() const {
-  // Per point: the common columns, the declared ones, the velocity-gradient scratch (and the
-  // hoop rate) and the stencil. Per node: the grid fields, plus one private scatter copy of
-  // mass, momentum and force per extra thread.
+  // Per point: the common columns, the declared ones, the stencil anchor, and the velocity
+  // gradients kept for fluids with cell densities. Per node: the grid fields, plus one
+  // private scatter copy of mass, momentum and force per extra thread. Per thread: a block's
+  // velocity gradients.
+  const bool axisymmetric = settings_.kinematics == Kinematics::axisymmetric;
+  const std::size_t gradient = sizeof(Mat<D>) + (axisymmetric ? sizeof(double) : 0);
   const std::size_t per_point = sizeof(Vec<D>) * 2 + 3 * sizeof(double) + sizeof(Sym<D>) +
-                                sizeof(int) + points_.columns.bytes_per_point() + sizeof(Mat<D>) +
-                                (hoop_rate_.empty() ? 0 : sizeof(double)) +
-                                transfer_->stencil_bytes();
+                                sizeof(int) + points_.columns.bytes_per_point() +
+                                transfer_->stencil_bytes() +
+                                (cell_density_ranges_.empty() ? 0 : gradient);
   const std::size_t per_copy = sizeof(double) + 2 * sizeof(Vec<D>);
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
   return per_point * points_.size() +
-         grid().node_count() * (fields_.bytes_per_node() + (threads - 1) * per_copy);
+         grid().node_count() * (fields_.bytes_per_node() + (threads - 1) * per_copy) +
+         threads * kBlockPoints * gradient;
 }
 
 template <int D>

@@ -139,6 +139,9 @@ class Simulation final : private Stages {
   void stencils();          // stage 2
   void observe(double dt);  // stage 8
   void update_frames();
+  void settle_cell_densities(double dt);
+  //! Each material's check of its bodies' points (and the fluids' thinning warning).
+  void check_materials();
   double time_step(double signal_speed) const;
   //! The point with the largest wave speed (waves) or point speed (otherwise), for failures.
   long fastest_point(bool waves) const;
@@ -159,8 +162,22 @@ class Simulation final : private Stages {
   //! Point ranges of fluids whose densities come from cell densities.
   std::vector<std::pair<long, long>> cell_density_ranges_;
   Column<Vec<D>> normal_, tangent_;  //!< membrane frames, when a material declares them
-  std::vector<Mat<D>> velocity_gradient_;
-  std::vector<double> hoop_rate_;
+  //! Stage `materials` runs over blocks of points of one body each.
+  static constexpr long kBlockPoints = 1024;
+  struct PointBlock {
+    int body;
+    long begin, end;
+  };
+  std::vector<PointBlock> blocks_;
+  //! Each thread's velocity gradients (and hoop rates) of the block it works on.
+  struct BlockScratch {
+    std::vector<Mat<D>> gradient;
+    std::vector<double> hoop_rate;
+  };
+  std::vector<BlockScratch> block_scratch_;
+  //! Fluids with cell densities: their points' gradients, kept across the cell densities.
+  std::vector<Mat<D>> settled_gradient_;
+  std::vector<double> settled_hoop_rate_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;
   long step_ = 0;
   std::set<std::string>

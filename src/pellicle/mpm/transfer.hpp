@@ -97,13 +97,14 @@ class Transfer {
   //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
   virtual void remap(const Particles<D>& points, Grid<D>& grid, PointRange range = {}) = 0;
 
-  //! Point kinematics of stage `materials`, from the grid's current velocity field: the
-  //! velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13), in axisymmetry the hoop rate
-  //! v_r/r, and the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ.
-  //! Returns the first point whose density became non-positive or non-finite, or −1.
-  virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
-                                std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate,
-                                PointRange range = {}) = 0;
+  //! Point kinematics of stage `materials` for points [begin, end), from the grid's current
+  //! velocity field: the velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13) into
+  //! gradient[p − begin], in axisymmetry the hoop rate v_r/r into hoop_rate[p − begin], and
+  //! the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ. Serial: the
+  //! step calls it for blocks of points from every thread at once. Returns the first point
+  //! whose density became non-positive or non-finite, or −1.
+  virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points, long begin,
+                                long end, Mat<D>* gradient, double* hoop_rate) const = 0;
 };
 
 //! A kernel known by name.

@@ -130,17 +130,12 @@ class TransferImpl final : public Transfer<D> {
     grid.velocities_from_momentum();
   }
 
-  long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points,
-                        std::vector<Mat<D>>& gradient, std::vector<double>& hoop_rate,
-                        PointRange range) override {
-    const long n = range.last(points.size());
+  long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points, long begin, long end,
+                        Mat<D>* gradient, double* hoop_rate) const override {
     const auto& strides = grid.strides();
-    gradient.resize(points.size());
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
-    if (axisymmetric) hoop_rate.resize(points.size());
-    long first_bad = n;
-#pragma omp parallel for schedule(static) reduction(min : first_bad)
-    for (long p = range.begin; p < n; ++p) {
+    long first_bad = -1;
+    for (long p = begin; p < end; ++p) {
       Mat<D> L = Mat<D>::Zero();
       double v_radial = 0.0;
       for_each_node(stencil(grid, p), strides,
@@ -148,19 +143,19 @@ class TransferImpl final : public Transfer<D> {
                       L += grid.velocity[node] * grad.transpose();
                       if (axisymmetric) v_radial += N * grid.velocity[node][0];
                     });
-      gradient[p] = L;
+      gradient[p - begin] = L;
       double volumetric = L.trace();
       if (axisymmetric) {
-        hoop_rate[p] = v_radial / points.position[p][0];
-        volumetric += hoop_rate[p];
+        hoop_rate[p - begin] = v_radial / points.position[p][0];
+        volumetric += hoop_rate[p - begin];
       }
       const double rho = points.density[p] / (1.0 + dt * volumetric);
       points.density[p] = rho;
       points.volume[p] = points.mass[p] / rho;
-      if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()))
-        first_bad = std::min(first_bad, p);
+      if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()) && first_bad < 0)
+        first_bad = p;
     }
-    return first_bad < n ? first_bad : -1;
+    return first_bad;
   }
 
  private:

@@ -42,7 +42,6 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double gruneisen = eos_.gruneisen();
   const double inv_dt = step.dt > 0.0 ? 1.0 / step.dt : 0.0;
-#pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
     const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);

@@ -26,7 +26,6 @@ void J2Plasticity<D>::update(const MaterialStep<D>& step) const {
   auto& plastic_strain = pts[plastic_strain_];
   const Kinematics kinematics = this->kinematics();
   const bool axisymmetric = kinematics == Kinematics::axisymmetric;
-#pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
     const Mat<D>& L = step.velocity_gradient[p];
     // Δε = Δt sym(L), hoop increment in axisymmetry (P3); the plane-stress return sets Δε_zz.

@@ -45,7 +45,6 @@ void LinearElastic<D>::update(const MaterialStep<D>& step) const {
   auto& pts = step.points;
   auto& strain = pts[this->strain_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
-#pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
     const Mat<D>& L = step.velocity_gradient[p];
     Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);

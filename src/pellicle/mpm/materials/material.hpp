@@ -16,12 +16,24 @@ namespace pellicle {
 //! How a 2D run interprets the third direction; 3D runs use `solid`.
 enum class Kinematics { plane_strain, plane_stress, axisymmetric, solid };
 
+//! Values a stage computed for a run of points: point p's is data[p − first].
+template <class T>
+struct BlockValues {
+  const T* data = nullptr;
+  long first = 0;
+  BlockValues() = default;
+  BlockValues(const T* values, long first_point) : data(values), first(first_point) {}
+  //! Values of every point, point 0 first (an empty vector: none).
+  BlockValues(const std::vector<T>& all) : data(all.data()) {}  // NOLINT: implicit on purpose
+  const T& operator[](long p) const { return data[p - first]; }
+};
+
 //! What a material needs for one step over the points [begin, end).
 template <int D>
 struct MaterialStep {
   Particles<D>& points;  //!< membrane points carry their current frames (normal, tangent)
-  const std::vector<Mat<D>>& velocity_gradient;  //!< L_ij = ∂v_i/∂x_j at each point
-  const std::vector<double>& hoop_rate;          //!< v_r/r (axisymmetric), else empty
+  BlockValues<Mat<D>> velocity_gradient;  //!< L_ij = ∂v_i/∂x_j of points [begin, end)
+  BlockValues<double> hoop_rate;          //!< v_r/r (axisymmetric), else none
   double dt;
   long begin, end;
   double cell = 0.0;  //!< grid cell size h (artificial viscosity length, thesis eq 4.12)
@@ -59,6 +71,8 @@ class Material {
                           const InitialState<D>& state) const;
 
   //! Stress and strain update of the points over one step (objective rate, see each model).
+  //! Serial: the step calls it for blocks of points from every thread at once, so it touches
+  //! only the points [begin, end) and nothing shared.
   virtual void update(const MaterialStep<D>& step) const = 0;
   //! Largest signal speed over the points on cells of size `cell`, for the CFL time step
   //! (IJNME eq 19): the elastic wave speed for solids; for fluids the sound speed raised by

@@ -123,7 +123,6 @@ void Membrane<D>::update(const MaterialStep<D>& step) const {
   auto& strain_normal = pts[strain_normal_];
   const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
   const double nu = poisson_;
-#pragma omp parallel for schedule(static)
   for (long p = step.begin; p < step.end; ++p) {
     const Sym<D> de = strain_increment<D>(step.velocity_gradient[p],
                                           axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
