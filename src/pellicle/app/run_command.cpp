@@ -86,9 +86,9 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
   std::fprintf(out, "time      end %g s, dt %.6g s (%s), CFL number %.3g, about %.0f steps\n",
                c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,
                std::ceil(c.settings.end_time / dt));
-  std::fprintf(out, "memory    about %.1f MB (state %.1f MB, writing a snapshot %.1f MB)\n",
-               (s.memory_estimate_bytes() + points_vtu_peak_bytes(s)) / 1048576.0,
-               s.memory_estimate_bytes() / 1048576.0, points_vtu_peak_bytes(s) / 1048576.0);
+  std::fprintf(out, "memory    about %.1f MB (%.0f bytes a point, grid included)\n",
+               s.memory_estimate_bytes() / 1048576.0,
+               static_cast<double>(s.memory_estimate_bytes()) / p.size());
   std::fprintf(out, "output    %s\n", c.output.directory.c_str());
   if (cfl > c.settings.cfl_limit)
     std::fprintf(out,

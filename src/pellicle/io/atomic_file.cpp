@@ -1,7 +1,6 @@
 #include "pellicle/io/atomic_file.hpp"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -9,20 +8,40 @@
 namespace pellicle {
 
 void write_file_atomically(const std::string& path, std::string_view content) {
-  const std::string temporary = path + ".part";
-  std::FILE* f = std::fopen(temporary.c_str(), "wb");
-  if (!f) throw std::runtime_error("cannot write " + temporary + ": " + std::strerror(errno));
-  const bool written = std::fwrite(content.data(), 1, content.size(), f) == content.size();
-  const bool closed = std::fclose(f) == 0;
-  if (!written || !closed) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write " + path + " (disk full?)");
+  AtomicFileWriter file(path);
+  file.write(content);
+  file.commit();
+}
+
+AtomicFileWriter::AtomicFileWriter(std::string path)
+    : path_(std::move(path)), temporary_(path_ + ".part") {
+  file_ = std::fopen(temporary_.c_str(), "wb");
+  if (!file_) throw std::runtime_error("cannot write " + temporary_ + ": " + std::strerror(errno));
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+  if (!file_) return;
+  std::fclose(file_);
+  std::remove(temporary_.c_str());
+}
+
+void AtomicFileWriter::write(std::string_view text) {
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size())
+    throw std::runtime_error("cannot write " + path_ + " (disk full?)");
+}
+
+void AtomicFileWriter::commit() {
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!closed) {
+    std::remove(temporary_.c_str());
+    throw std::runtime_error("cannot write " + path_ + " (disk full?)");
   }
   std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
+  std::filesystem::rename(temporary_, path_, ec);
   if (ec) {
-    std::remove(temporary.c_str());  // never leave the temporary behind
-    throw std::runtime_error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+    std::remove(temporary_.c_str());  // never leave the temporary behind
+    throw std::runtime_error("cannot rename " + temporary_ + " to " + path_ + ": " + ec.message());
   }
 }
 

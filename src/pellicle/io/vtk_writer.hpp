@@ -13,13 +13,10 @@ namespace pellicle {
 
 //! Particle snapshot: positions and velocity, mass, volume, density, stress, strain,
 //! pressure, von Mises stress, body id and whether the point is a fluid's, per point.
-//! Written atomically.
+//! Written atomically, streamed a few thousand points at a time (its memory does not grow
+//! with the number of points).
 template <int D>
 void write_points_vtu(const std::string& path, const Simulation<D>& simulation);
-//! Memory writing one points snapshot takes at its peak: the file's text (base64, 4/3 of the
-//! arrays' bytes) held whole until it is written, and the arrays computed for it.
-template <int D>
-std::size_t points_vtu_peak_bytes(const Simulation<D>& simulation);
 
 //! Grid snapshot on the node lattice (ghost layers included): nodal mass and velocity, and
 //! the point stresses projected onto the nodes (grid_projection.hpp): `pressure`, `stress`
