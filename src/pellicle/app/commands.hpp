@@ -28,7 +28,8 @@ struct BenchOptions {
   bool json = false;
   long points = 250000;
   long steps = 40;
-  std::vector<int> threads;  //!< empty: 1 and 2
+  std::vector<int> threads;        //!< empty: 1 and 2
+  std::vector<std::string> cases;  //!< benchmark names; empty: all
 };
 
 int command_bench(const BenchOptions& options);

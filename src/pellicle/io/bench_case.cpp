@@ -89,4 +89,48 @@ std::unique_ptr<Simulation<2>> make_bench_gas_membrane(long points) {
   return build_simulation<2>(c);
 }
 
+std::unique_ptr<Simulation<3>> make_bench_two_spheres(long points, const std::string& kernel,
+                                                      const std::string& velocity_update,
+                                                      const std::string& scheme) {
+  // Two balls of radius 0.2, 8 points per covered cell: points = 16 (4π/3) 0.2³ cells³.
+  const double per_cell_cubed = 16.0 * 4.0 / 3.0 * std::numbers::pi * 0.008;
+  const long cells = std::max(8L, std::lround(std::cbrt(points / per_cell_cubed)));
+  char cell[64];
+  std::snprintf(cell, sizeof cell, "grid.cell=%.17g", 1.0 / cells);
+  const std::string text = R"(
+[grid]
+lower = [0.0, 0.0, 0.0]
+upper = [1.0, 1.0, 1.0]
+cell = 0.1
+kinematics = "solid"
+[solver]
+end_time = 1000.0
+cfl = 0.4
+[[material]]
+name = "elastic"
+model = "linear-elastic"
+density = 1000.0
+youngs_modulus = 1000.0
+poisson_ratio = 0.3
+[[body]]
+name = "lower-sphere"
+material = "elastic"
+points_per_cell = 2
+velocity = [0.1, 0.1, 0.1]
+region = { shape = "sphere", center = [0.25, 0.25, 0.25], radius = 0.2 }
+[[body]]
+name = "upper-sphere"
+material = "elastic"
+points_per_cell = 2
+velocity = [-0.1, -0.1, -0.1]
+region = { shape = "sphere", center = [0.75, 0.75, 0.75], radius = 0.2 }
+)";
+  const auto source = case_source_from_text(
+      text, "<3D benchmark>",
+      {cell, "solver.kernel=" + kernel, "solver.velocity_update=" + velocity_update,
+       "solver.scheme=" + scheme});
+  Case<3> c = read_case<3>(*source);
+  return build_simulation<3>(c);
+}
+
 }  // namespace pellicle

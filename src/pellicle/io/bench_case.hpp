@@ -25,4 +25,11 @@ std::unique_ptr<Simulation<2>> make_bench_gas_box(long points, const std::string
 //! membrane at a quarter cell, quadratic B-splines with APIC, Δt scaled with the cell.
 std::unique_ptr<Simulation<2>> make_bench_gas_membrane(long points);
 
+//! Two elastic spheres of radius 0.2 approaching along the diagonal of the unit cube (the
+//! two-disk problem in 3D), 2 × 2 × 2 points per cell, refined to about `points` points
+//! (140,640 points on 64³ cells), with the given kernel, velocity update and scheme.
+std::unique_ptr<Simulation<3>> make_bench_two_spheres(long points, const std::string& kernel,
+                                                      const std::string& velocity_update,
+                                                      const std::string& scheme);
+
 }  // namespace pellicle
