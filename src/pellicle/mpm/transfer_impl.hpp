@@ -15,6 +15,24 @@
 
 namespace pellicle {
 
+//! Vector updates of the node loops written element by element, in the order Eigen evaluates
+//! the expressions they replace (results are bitwise the same): Eigen's packet code for 2- and
+//! 3-vectors spills to the stack inside these loops and runs several times slower. Matrix-
+//! vector products stay Eigen's (its order of terms differs between rows).
+namespace node_algebra {
+//! y += a x
+template <int D>
+inline void add_scaled(Vec<D>& y, double a, const Vec<D>& x) {
+  for (int i = 0; i < D; ++i) y[i] += a * x[i];
+}
+//! M += u vᵀ
+template <int D>
+inline void add_outer(Mat<D>& M, const Vec<D>& u, const Vec<D>& v) {
+  for (int j = 0; j < D; ++j)
+    for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
+}
+}  // namespace node_algebra
+
 template <int D, class Kernel>
 class TransferImpl final : public Transfer<D> {
  public:
@@ -140,7 +158,7 @@ class TransferImpl final : public Transfer<D> {
       double v_radial = 0.0;
       for_each_node(stencil(grid, p), strides,
                     [&](long node, double N, const Vec<D>& grad, const IVec<D>&) {
-                      L += grid.velocity[node] * grad.transpose();
+                      node_algebra::add_outer<D>(L, grid.velocity[node], grad);
                       if (axisymmetric) v_radial += N * grid.velocity[node][0];
                     });
       gradient[p - begin] = L;
@@ -204,15 +222,18 @@ class TransferImpl final : public Transfer<D> {
       for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
         const Vec<D>& v_node = grid.velocity[node];
         const Vec<D>& dv_node = grid.velocity_change[node];
-        v_lagrangian += N * v_node;
-        v_change += N * dv_node;
+        node_algebra::add_scaled<D>(v_lagrangian, N, v_node);
+        node_algebra::add_scaled<D>(v_change, N, dv_node);
         if (apic_update) {
           Vec<D> dx;
           for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-          if constexpr (Kernel::apic_inertia > 0.0)
-            affine += (N * inertia_scale) * v_node * dx.transpose();
-          else
-            affine += v_node * grad.transpose();
+          if constexpr (Kernel::apic_inertia > 0.0) {
+            Vec<D> scaled;  // (N / (D_dd h²)) v_i
+            for (int d = 0; d < D; ++d) scaled[d] = (N * inertia_scale) * v_node[d];
+            node_algebra::add_outer<D>(affine, scaled, dx);
+          } else {
+            node_algebra::add_outer<D>(affine, v_node, grad);
+          }
           if constexpr (Heat) {
             r_in += N * (v_old + c_old * dx - (v_node - dv_node)).squaredNorm();
             s_new += N * v_node.squaredNorm();
@@ -293,7 +314,7 @@ class TransferImpl final : public Transfer<D> {
         for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
           if constexpr (WithMass) out.mass[node] += N * m;
           if constexpr (with_momentum) {
-            out.momentum[node] += N * mv;
+            node_algebra::add_scaled<D>(out.momentum[node], N, mv);
             if constexpr (Affine) {
               Vec<D> dx;
               for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
@@ -301,7 +322,8 @@ class TransferImpl final : public Transfer<D> {
             }
           }
           if constexpr (WithForce) {
-            out.force[node] += N * external - stress_volume * grad;
+            const Vec<D> internal = stress_volume * grad;
+            for (int d = 0; d < D; ++d) out.force[node][d] += N * external[d] - internal[d];
             if (axisymmetric) out.force[node][0] -= N * hoop_over_r;
           }
         });
