@@ -15,10 +15,10 @@
 
 namespace pellicle {
 
-//! Vector updates of the node loops written element by element, in the order Eigen evaluates
-//! the expressions they replace (results are bitwise the same): Eigen's packet code for 2- and
-//! 3-vectors spills to the stack inside these loops and runs several times slower. Matrix-
-//! vector products stay Eigen's (its order of terms differs between rows).
+//! The small vector products of the node loops written element by element: Eigen's packet
+//! code for 2- and 3-vectors spills to the stack inside these loops and runs several times
+//! slower. Each keeps the order of operations of the Eigen expression it replaced, so results
+//! are bitwise those of before (docs/theory/performance.md).
 namespace node_algebra {
 //! y += a x
 template <int D>
@@ -30,6 +30,22 @@ template <int D>
 inline void add_outer(Mat<D>& M, const Vec<D>& u, const Vec<D>& v) {
   for (int j = 0; j < D; ++j)
     for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
+}
+//! (c A) x, with Eigen's grouping of the terms: rows 0 and 1 as one packet, ((t0 + t1) + t2),
+//! and in 3D the third row as its tail, t0 + (t1 + t2).
+template <int D>
+inline Vec<D> times(const Mat<D>& A, const Vec<D>& x, double c = 1.0) {
+  Vec<D> y;
+  for (int i = 0; i < D; ++i) {
+    const double t0 = (c * A(i, 0)) * x[0], t1 = (c * A(i, 1)) * x[1];
+    if constexpr (D == 2) {
+      y[i] = t0 + t1;
+    } else {
+      const double t2 = (c * A(i, 2)) * x[2];
+      y[i] = i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2);
+    }
+  }
+  return y;
 }
 }  // namespace node_algebra
 
@@ -311,20 +327,27 @@ class TransferImpl final : public Transfer<D> {
           if (axisymmetric) hoop_over_r = points.volume[p] * sigma(2, 2) / points.position[p][0];
           external = m * (gravity + points.bodies[points.body[p]].applied_acceleration);
         }
+        Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
+        if constexpr (Affine) C = affine[p];
         for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
           if constexpr (WithMass) out.mass[node] += N * m;
           if constexpr (with_momentum) {
-            node_algebra::add_scaled<D>(out.momentum[node], N, mv);
+            Vec<D> momentum = out.momentum[node];
+            node_algebra::add_scaled<D>(momentum, N, mv);
             if constexpr (Affine) {
               Vec<D> dx;
               for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-              out.momentum[node] += (N * m) * (affine[p] * dx);
+              const Vec<D> affine_momentum = node_algebra::times<D>(C, dx, N * m);
+              for (int d = 0; d < D; ++d) momentum[d] += affine_momentum[d];
             }
+            out.momentum[node] = momentum;
           }
           if constexpr (WithForce) {
-            const Vec<D> internal = stress_volume * grad;
-            for (int d = 0; d < D; ++d) out.force[node][d] += N * external[d] - internal[d];
-            if (axisymmetric) out.force[node][0] -= N * hoop_over_r;
+            const Vec<D> internal = node_algebra::times<D>(stress_volume, grad);
+            Vec<D> force = out.force[node];
+            for (int d = 0; d < D; ++d) force[d] += N * external[d] - internal[d];
+            if (axisymmetric) force[0] -= N * hoop_over_r;
+            out.force[node] = force;
           }
         });
         lo = std::min(lo, s.base);
