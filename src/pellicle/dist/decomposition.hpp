@@ -1,0 +1,47 @@
+#pragma once
+//! Patch decomposition for distributed runs (DESIGN.md, "Distributed runs"): the grid's cells
+//! are split into rectangular patches, one per rank, by recursive bisection of the point
+//! count. Pure geometry (no MPI): every rank computes the same patches from the same counts.
+
+#include <string>
+#include <vector>
+
+#include "pellicle/core/types.hpp"
+
+namespace pellicle {
+
+//! Points per grid cell, cells[0] × … × cells[D−1] of them, axis 0 fastest.
+template <int D>
+struct CellCounts {
+  IVec<D> cells;
+  std::vector<long> points;
+  long at(const IVec<D>& cell) const;
+};
+
+//! Cells [lower, upper) per axis, owned by `rank`.
+template <int D>
+struct Patch {
+  IVec<D> lower, upper;
+  int rank = 0;
+  long points = 0;
+  bool contains(const IVec<D>& cell) const {
+    return (cell.array() >= lower.array()).all() && (cell.array() < upper.array()).all();
+  }
+};
+
+//! Split the cells into `ranks` patches: a box of r ranks is cut across its longest axis (in
+//! cells) at the plane whose share of the box's points is closest to ⌊r/2⌋/r, and each side
+//! gets ⌊r/2⌋ and ⌈r/2⌉ ranks, until every box has one rank. Every patch is at least
+//! `min_cells` cells wide along every axis it was cut across, so a halo as wide as the kernel
+//! only ever reaches adjacent patches. With no points at all, cells weigh equally. Patches
+//! are numbered by rank, lower side first. Throws std::invalid_argument (naming the grid and
+//! the rank count) when the grid is too small for that many patches.
+template <int D>
+std::vector<Patch<D>> bisect_patches(const CellCounts<D>& counts, int ranks, int min_cells);
+
+//! max / mean of the patches' point counts, minus 1: 0 is perfect balance; a run rebalances
+//! when this exceeds its limit.
+template <int D>
+double imbalance(const std::vector<Patch<D>>& patches);
+
+}  // namespace pellicle
