@@ -311,8 +311,19 @@ class TransferImpl final : public Transfer<D> {
 #pragma omp parallel
     {
       const int t = omp_get_thread_num();
-      NodeFields<D> out = buffers_.fields(t, grid);
+      // The nodes this thread's points touch (the same static share of the points as below).
       long lo = std::numeric_limits<long>::max(), hi = -1;
+#pragma omp for schedule(static) nowait
+      for (long p = range.begin; p < n; ++p) {
+        IVec<D> first;
+        for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
+        const long base = grid.flatten(first);
+        lo = std::min(lo, base);
+        hi = std::max(hi, base + last_node_offset(strides));
+      }
+      buffers_.touched(t, lo, hi);
+#pragma omp barrier
+      const ScatterTarget<D> target = buffers_.target(t, grid);
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p) {
         const Stencil<D, Kernel> s = stencil(grid, p);
@@ -330,6 +341,7 @@ class TransferImpl final : public Transfer<D> {
         Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
         if constexpr (Affine) C = affine[p];
         for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+          const NodeFields<D>& out = target.at(node);
           if constexpr (WithMass) out.mass[node] += N * m;
           if constexpr (with_momentum) {
             Vec<D> momentum = out.momentum[node];
@@ -350,10 +362,7 @@ class TransferImpl final : public Transfer<D> {
             out.force[node] = force;
           }
         });
-        lo = std::min(lo, s.base);
-        hi = std::max(hi, s.base + last_node_offset(strides));
       }
-      buffers_.touched(t, lo, hi);
     }
     buffers_.reduce(grid, WithMass, with_momentum, WithForce);
     if constexpr (WithMass) grid.fold(grid.mass);
