@@ -218,11 +218,9 @@ class TransferImpl final : public Transfer<D> {
     const double h = grid.cell();
     const double inertia_scale =
         Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
-    double max_speed_squared = 0.0;  // one square root at the end: √ is monotonic
+    double speed_squared = 0.0;  // the largest |v|²: one square root at the end
     long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) reduction(max                                \
-                                                    : max_speed_squared) reduction(min \
-                                                                                   : first_bad)
+#pragma omp parallel for schedule(static) reduction(max : speed_squared) reduction(min : first_bad)
     for (long p = range.begin; p < n; ++p) {
       const Stencil<D, Kernel> s = stencil(grid, p);
       Vec<D> v_lagrangian = Vec<D>::Zero();
@@ -273,7 +271,7 @@ class TransferImpl final : public Transfer<D> {
       points.velocity[p] = v;
       if (apic_update) affine_out[p] = affine;
       if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
-      max_speed_squared = std::max(max_speed_squared, v.squaredNorm());
+      speed_squared = std::max(speed_squared, v.squaredNorm());
     }
     if (first_bad != std::numeric_limits<long>::max()) {
       failure.point = first_bad;
@@ -282,7 +280,7 @@ class TransferImpl final : public Transfer<D> {
               ? "the point left the grid domain"
               : "non-finite position or velocity";
     }
-    return std::sqrt(max_speed_squared);
+    return std::sqrt(speed_squared);
   }
 
   template <class T>

@@ -1,9 +1,9 @@
 #pragma once
 //! The per-point stencil of a kernel: the first node it touches, and per axis the 1D weights
 //! and weight derivatives. Fixed once per step (DESIGN: stage `stencils`) as an anchor per
-//! point, from which every transfer of that step rebuilds it. The D-dimensional weight of node (a,
-//! b[, c]) of the stencil is w[0][a]·w[1][b]·w[2][c]; its gradient is the product rule over the
-//! axes.
+//! point, from which every transfer of that step rebuilds it. The D-dimensional weight of
+//! node (a, b[, c]) of the stencil is w[0][a]·w[1][b]·w[2][c]; its gradient is the product
+//! rule over the axes.
 
 #include <array>
 #include <type_traits>
