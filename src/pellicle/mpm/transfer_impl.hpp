@@ -23,13 +23,19 @@ namespace node_algebra {
 //! y += a x
 template <int D>
 inline void add_scaled(Vec<D>& y, double a, const Vec<D>& x) {
-  for (int i = 0; i < D; ++i) y[i] += a * x[i];
+  if constexpr (D == 2)
+    y += a * x;  // one SSE2 packet: Eigen's code is the fast one
+  else
+    for (int i = 0; i < D; ++i) y[i] += a * x[i];
 }
 //! M += u vᵀ
 template <int D>
 inline void add_outer(Mat<D>& M, const Vec<D>& u, const Vec<D>& v) {
-  for (int j = 0; j < D; ++j)
-    for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
+  if constexpr (D == 2)
+    M += u * v.transpose();
+  else
+    for (int j = 0; j < D; ++j)
+      for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
 }
 //! (c A) x, with Eigen's grouping of the terms: rows 0 and 1 as one packet, ((t0 + t1) + t2),
 //! and in 3D the third row as its tail, t0 + (t1 + t2).
@@ -302,7 +308,6 @@ class TransferImpl final : public Transfer<D> {
     constexpr bool with_momentum = WithMass || MomentumOnly;
     const long n = range.last(points.size());
     const auto& strides = grid.strides();
-    const double h = grid.cell();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     const Mat<D>* affine = Affine ? points[affine_].data() : nullptr;
     buffers_.prepare(grid);
@@ -322,24 +327,49 @@ class TransferImpl final : public Transfer<D> {
       buffers_.touched(t, lo, hi);
 #pragma omp barrier
       const ScatterTarget<D> target = buffers_.target(t, grid);
+      // Every node of a thread whose whole range is its window goes to the grid: no test.
+      const bool direct = target.window_first <= lo && hi <= target.window_last;
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p) {
-        const Stencil<D, Kernel> s = stencil(grid, p);
-        const double m = points.mass[p];
-        const Vec<D> mv = m * points.velocity[p];
-        Mat<D> stress_volume;  // V_p σ_p, in-plane part
-        double hoop_over_r = 0.0;
-        Vec<D> external = Vec<D>::Zero();
-        if constexpr (WithForce) {
-          const Mat3 sigma = to_mat3<D>(points.stress[p]);
-          stress_volume = points.volume[p] * sigma.template topLeftCorner<D, D>();
-          if (axisymmetric) hoop_over_r = points.volume[p] * sigma(2, 2) / points.position[p][0];
-          external = m * (gravity + points.bodies[points.body[p]].applied_acceleration);
-        }
-        Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
-        if constexpr (Affine) C = affine[p];
-        for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
-          const NodeFields<D>& out = target.at(node);
+        if (direct)
+          scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
+              points, p, gravity, grid, axisymmetric, affine,
+              [&](long) -> const NodeFields<D>& { return target.grid; });
+        else
+          scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
+              points, p, gravity, grid, axisymmetric, affine,
+              [&](long node) -> const NodeFields<D>& { return target.at(node); });
+      }
+    }
+    buffers_.reduce(grid, WithMass, with_momentum, WithForce);
+    if constexpr (WithMass) grid.fold(grid.mass);
+    if constexpr (with_momentum) grid.fold(grid.momentum);
+    if constexpr (WithForce) grid.fold(grid.force);
+  }
+
+  //! One point's share of the scatter, into the node fields `fields(node)` gives.
+  template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly, class Fields>
+  void scatter_point(const Particles<D>& points, long p, const Vec<D>& gravity, const Grid<D>& grid,
+                     bool axisymmetric, const Mat<D>* affine, Fields&& fields) const {
+    constexpr bool with_momentum = WithMass || MomentumOnly;
+    const double h = grid.cell();
+    const Stencil<D, Kernel> s = stencil(grid, p);
+    const double m = points.mass[p];
+    const Vec<D> mv = m * points.velocity[p];
+    Mat<D> stress_volume;  // V_p σ_p, in-plane part
+    double hoop_over_r = 0.0;
+    Vec<D> external = Vec<D>::Zero();
+    if constexpr (WithForce) {
+      const Mat3 sigma = to_mat3<D>(points.stress[p]);
+      stress_volume = points.volume[p] * sigma.template topLeftCorner<D, D>();
+      if (axisymmetric) hoop_over_r = points.volume[p] * sigma(2, 2) / points.position[p][0];
+      external = m * (gravity + points.bodies[points.body[p]].applied_acceleration);
+    }
+    Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
+    if constexpr (Affine) C = affine[p];
+    for_each_node(
+        s, grid.strides(), [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+          const NodeFields<D>& out = fields(node);
           if constexpr (WithMass) out.mass[node] += N * m;
           if constexpr (with_momentum) {
             Vec<D> momentum = out.momentum[node];
@@ -347,25 +377,27 @@ class TransferImpl final : public Transfer<D> {
             if constexpr (Affine) {
               Vec<D> dx;
               for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-              const Vec<D> affine_momentum = node_algebra::times<D>(C, dx, N * m);
-              for (int d = 0; d < D; ++d) momentum[d] += affine_momentum[d];
+              if constexpr (D == 2) {
+                momentum += (N * m) * (C * dx);  // 2D: Eigen's packet code is the fast one
+              } else {
+                const Vec<D> affine_momentum = node_algebra::times<D>(C, dx, N * m);
+                for (int d = 0; d < D; ++d) momentum[d] += affine_momentum[d];
+              }
             }
             out.momentum[node] = momentum;
           }
           if constexpr (WithForce) {
-            const Vec<D> internal = node_algebra::times<D>(stress_volume, grad);
             Vec<D> force = out.force[node];
-            for (int d = 0; d < D; ++d) force[d] += N * external[d] - internal[d];
+            if constexpr (D == 2) {
+              force += N * external - stress_volume * grad;
+            } else {
+              const Vec<D> internal = node_algebra::times<D>(stress_volume, grad);
+              for (int d = 0; d < D; ++d) force[d] += N * external[d] - internal[d];
+            }
             if (axisymmetric) force[0] -= N * hoop_over_r;
             out.force[node] = force;
           }
         });
-      }
-    }
-    buffers_.reduce(grid, WithMass, with_momentum, WithForce);
-    if constexpr (WithMass) grid.fold(grid.mass);
-    if constexpr (with_momentum) grid.fold(grid.momentum);
-    if constexpr (WithForce) grid.fold(grid.force);
   }
 
   static long last_node_offset(const std::array<long, D>& strides) {
