@@ -15,10 +15,11 @@
 
 namespace pellicle {
 
-//! The small vector products of the node loops written element by element: Eigen's packet
-//! code for 2- and 3-vectors spills to the stack inside these loops and runs several times
-//! slower. Each keeps the order of operations of the Eigen expression it replaced, so results
-//! are bitwise those of before (docs/theory/performance.md).
+//! The small vector products of the node loops written element by element in 3D: Eigen's
+//! packet code for 3-vectors spills to the stack inside these loops and runs several times
+//! slower (a 2D vector is one SSE2 packet, and there Eigen's code is the fast one). Each keeps
+//! the order of operations of the Eigen expression it replaced, so results are bitwise those
+//! of before (docs/theory/performance.md).
 namespace node_algebra {
 //! y += a x
 template <int D>
