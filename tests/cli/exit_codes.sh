@@ -248,5 +248,15 @@ expect 2 "expected a case file, found a pipe, socket or device" -- "$pellicle" c
 mkfifo "$work/fifo.toml"
 expect 2 "expected a case file, found a pipe, socket or device" -- timeout 10 "$pellicle" check "$work/fifo.toml"
 
+# The benchmark: an unknown case is refused with the known ones; every case reports its
+# throughput and memory per point in JSON.
+expect 2 "no benchmark named 'disks' (known: two-disks," -- "$pellicle" bench --case disks
+expect 0 '"bytes_per_point"' -- "$pellicle" bench --json --points 1000 --steps 1 --threads 1
+for c in two-disks two-disks-contact gas-box gas-in-membrane two-spheres-3d two-spheres-3d-musl \
+  two-spheres-3d-flip; do
+  grep -q "\"case\": \"$c\".*\"state_bytes_per_point\": [0-9]" "$work/out" ||
+    { echo "FAIL: pellicle bench --json has no result for $c"; failures=$((failures + 1)); }
+done
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]
