@@ -12,22 +12,6 @@ namespace pellicle {
 namespace {
 
 template <int D>
-std::vector<long> box_nodes(const NodeBox<D>& box, const IVec<D>& cells, int ghost) {
-  std::vector<long> out;
-  IVec<D> c = box.first;
-  while (true) {
-    long index = c[D - 1] + ghost;
-    for (int d = D - 2; d >= 0; --d) index = index * (cells[d] + 1 + 2 * ghost) + c[d] + ghost;
-    out.push_back(index);
-    int d = 0;
-    while (d < D && ++c[d] > box.last[d]) c[d] = box.first[d], ++d;
-    if (d == D) break;
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-template <int D>
 void check_plan(const IVec<D>& cells, int ranks, int ghost) {
   long cell_count = 1, node_count = 1;
   for (int d = 0; d < D; ++d) cell_count *= cells[d], node_count *= cells[d] + 1 + 2 * ghost;
@@ -36,15 +20,15 @@ void check_plan(const IVec<D>& cells, int ranks, int ghost) {
   // Owned nodes: every node of the grid (ghost layers included) exactly once.
   std::vector<int> owners(node_count, 0);
   for (const auto& p : patches)
-    for (long n : box_nodes(owned_nodes(p, cells, ghost), cells, ghost)) ++owners[n];
+    for (long n : node_indices(owned_nodes(p, cells, ghost), cells, ghost)) ++owners[n];
   EXPECT_TRUE(std::all_of(owners.begin(), owners.end(), [](int o) { return o == 1; }));
 
   std::vector<std::vector<HaloExchange>> plans;
   for (int r = 0; r < ranks; ++r) plans.push_back(halo_plan(patches, cells, ghost, r));
   for (int r = 0; r < ranks; ++r) {
     // The halo (touched, not owned) goes to owners, each node once.
-    const auto touched = box_nodes(touched_nodes(patches[r], cells, ghost), cells, ghost);
-    const auto owned = box_nodes(owned_nodes(patches[r], cells, ghost), cells, ghost);
+    const auto touched = node_indices(touched_nodes(patches[r], cells, ghost), cells, ghost);
+    const auto owned = node_indices(owned_nodes(patches[r], cells, ghost), cells, ghost);
     std::vector<long> halo;
     std::set_difference(touched.begin(), touched.end(), owned.begin(), owned.end(),
                         std::back_inserter(halo));

@@ -26,9 +26,6 @@ NodeBox<D> touched_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost) {
   return box;
 }
 
-namespace {
-
-//! Global flat indices of the nodes of a box, ascending (axis 0 fastest, as Grid::flatten).
 template <int D>
 std::vector<long> node_indices(const NodeBox<D>& box, const IVec<D>& cells, int ghost) {
   std::vector<long> out;
@@ -44,6 +41,8 @@ std::vector<long> node_indices(const NodeBox<D>& box, const IVec<D>& cells, int 
   }
   return out;
 }
+
+namespace {
 
 template <int D>
 NodeBox<D> intersection(const NodeBox<D>& a, const NodeBox<D>& b) {
@@ -77,6 +76,8 @@ template NodeBox<2> owned_nodes<2>(const Patch<2>&, const IVec<2>&, int);
 template NodeBox<3> owned_nodes<3>(const Patch<3>&, const IVec<3>&, int);
 template NodeBox<2> touched_nodes<2>(const Patch<2>&, const IVec<2>&, int);
 template NodeBox<3> touched_nodes<3>(const Patch<3>&, const IVec<3>&, int);
+template std::vector<long> node_indices<2>(const NodeBox<2>&, const IVec<2>&, int);
+template std::vector<long> node_indices<3>(const NodeBox<3>&, const IVec<3>&, int);
 template std::vector<HaloExchange> halo_plan<2>(const std::vector<Patch<2>>&, const IVec<2>&, int,
                                                 int);
 template std::vector<HaloExchange> halo_plan<3>(const std::vector<Patch<3>>&, const IVec<3>&, int,

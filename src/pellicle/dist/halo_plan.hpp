@@ -40,5 +40,8 @@ template <int D>
 NodeBox<D> owned_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost);
 template <int D>
 NodeBox<D> touched_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost);
+//! Global flat indices of the nodes of a box, ascending (axis 0 fastest, as Grid::flatten).
+template <int D>
+std::vector<long> node_indices(const NodeBox<D>& box, const IVec<D>& cells, int ghost);
 
 }  // namespace pellicle

@@ -38,21 +38,33 @@ inline void add_outer(Mat<D>& M, const Vec<D>& u, const Vec<D>& v) {
     for (int j = 0; j < D; ++j)
       for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
 }
-//! (c A) x, with Eigen's grouping of the terms: rows 0 and 1 as one packet, ((t0 + t1) + t2),
-//! and in 3D the third row as its tail, t0 + (t1 + t2).
+//! momentum += c (C dx): the APIC term of the scatter. In 3D term by term with Eigen's
+//! grouping of a matrix-vector product (the scalar folded into the matrix; rows 0 and 1 as one
+//! packet, ((t0 + t1) + t2), the third row as its tail, t0 + (t1 + t2)).
 template <int D>
-inline Vec<D> times(const Mat<D>& A, const Vec<D>& x, double c = 1.0) {
-  Vec<D> y;
-  for (int i = 0; i < D; ++i) {
-    const double t0 = (c * A(i, 0)) * x[0], t1 = (c * A(i, 1)) * x[1];
-    if constexpr (D == 2) {
-      y[i] = t0 + t1;
-    } else {
-      const double t2 = (c * A(i, 2)) * x[2];
-      y[i] = i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2);
+inline void add_affine(Vec<D>& momentum, double c, const Mat<D>& C, const Vec<D>& dx) {
+  if constexpr (D == 2) {
+    momentum += c * (C * dx);
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const double t0 = (c * C(i, 0)) * dx[0], t1 = (c * C(i, 1)) * dx[1],
+                   t2 = (c * C(i, 2)) * dx[2];
+      momentum[i] += i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2);
     }
   }
-  return y;
+}
+//! force += N external − S ∇N (IJNME eq 16), S = V σ; the product grouped as in add_affine.
+template <int D>
+inline void add_force(Vec<D>& force, double N, const Vec<D>& external, const Mat<D>& S,
+                      const Vec<D>& grad) {
+  if constexpr (D == 2) {
+    force += N * external - S * grad;
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const double t0 = S(i, 0) * grad[0], t1 = S(i, 1) * grad[1], t2 = S(i, 2) * grad[2];
+      force[i] += N * external[i] - (i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2));
+    }
+  }
 }
 }  // namespace node_algebra
 
@@ -315,18 +327,21 @@ class TransferImpl final : public Transfer<D> {
 #pragma omp parallel
     {
       const int t = omp_get_thread_num();
-      // The nodes this thread's points touch (the same static share of the points as below).
+      // The nodes this thread's points touch (the same static share of the points as below);
+      // a lone thread writes everything into the grid and need not know.
       long lo = std::numeric_limits<long>::max(), hi = -1;
+      if (omp_get_num_threads() > 1) {
 #pragma omp for schedule(static) nowait
-      for (long p = range.begin; p < n; ++p) {
-        IVec<D> first;
-        for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
-        const long base = grid.flatten(first);
-        lo = std::min(lo, base);
-        hi = std::max(hi, base + last_node_offset(strides));
-      }
-      buffers_.touched(t, lo, hi);
+        for (long p = range.begin; p < n; ++p) {
+          IVec<D> first;
+          for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
+          const long base = grid.flatten(first);
+          lo = std::min(lo, base);
+          hi = std::max(hi, base + last_node_offset(strides));
+        }
+        buffers_.touched(t, lo, hi);
 #pragma omp barrier
+      }
       const ScatterTarget<D> target = buffers_.target(t, grid);
       // Every node of a thread whose whole range is its window goes to the grid: no test.
       const bool direct = target.window_first <= lo && hi <= target.window_last;
@@ -368,37 +383,27 @@ class TransferImpl final : public Transfer<D> {
     }
     Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
     if constexpr (Affine) C = affine[p];
-    for_each_node(
-        s, grid.strides(), [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
-          const NodeFields<D>& out = fields(node);
-          if constexpr (WithMass) out.mass[node] += N * m;
-          if constexpr (with_momentum) {
-            Vec<D> momentum = out.momentum[node];
-            node_algebra::add_scaled<D>(momentum, N, mv);
-            if constexpr (Affine) {
-              Vec<D> dx;
-              for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-              if constexpr (D == 2) {
-                momentum += (N * m) * (C * dx);  // 2D: Eigen's packet code is the fast one
-              } else {
-                const Vec<D> affine_momentum = node_algebra::times<D>(C, dx, N * m);
-                for (int d = 0; d < D; ++d) momentum[d] += affine_momentum[d];
-              }
-            }
-            out.momentum[node] = momentum;
-          }
-          if constexpr (WithForce) {
-            Vec<D> force = out.force[node];
-            if constexpr (D == 2) {
-              force += N * external - stress_volume * grad;
-            } else {
-              const Vec<D> internal = node_algebra::times<D>(stress_volume, grad);
-              for (int d = 0; d < D; ++d) force[d] += N * external[d] - internal[d];
-            }
-            if (axisymmetric) force[0] -= N * hoop_over_r;
-            out.force[node] = force;
-          }
-        });
+    for_each_node(s, grid.strides(),
+                  [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
+                    const NodeFields<D>& out = fields(node);
+                    if constexpr (WithMass) out.mass[node] += N * m;
+                    if constexpr (with_momentum) {
+                      Vec<D> momentum = out.momentum[node];
+                      node_algebra::add_scaled<D>(momentum, N, mv);
+                      if constexpr (Affine) {
+                        Vec<D> dx;
+                        for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
+                        node_algebra::add_affine<D>(momentum, N * m, C, dx);
+                      }
+                      out.momentum[node] = momentum;
+                    }
+                    if constexpr (WithForce) {
+                      Vec<D> force = out.force[node];
+                      node_algebra::add_force<D>(force, N, external, stress_volume, grad);
+                      if (axisymmetric) force[0] -= N * hoop_over_r;
+                      out.force[node] = force;
+                    }
+                  });
   }
 
   static long last_node_offset(const std::array<long, D>& strides) {
