@@ -57,6 +57,7 @@ void stage(benchmark::State& state, Stage which) {
         break;
       case Stage::remap:
         transfer.remap(points, grid);
+        grid.velocities_from_momentum();
         break;
       case Stage::kinematics:
         transfer.point_kinematics(grid, dt, points, 0, n, gradient.data(), nullptr);

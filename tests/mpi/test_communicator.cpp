@@ -3,13 +3,11 @@
 // which together hold every point once.
 #include <gtest/gtest.h>
 
-#include "pellicle/dist/communicator.hpp"
 #include "pellicle/dist/decomposition.hpp"
+#include "world.hpp"
 
 namespace pellicle {
 namespace {
-
-Communicator* world = nullptr;
 
 TEST(Communicator, SumsInRankOrderAreTheSameOnEveryRank) {
   const int n = world->size();
@@ -46,15 +44,3 @@ TEST(Communicator, EveryRankComputesTheSamePatchesAndTheyHoldEveryPointOnce) {
 
 }  // namespace
 }  // namespace pellicle
-
-int main(int argc, char** argv) {
-  pellicle::Communicator communicator(argc, argv);
-  pellicle::world = &communicator;
-  ::testing::InitGoogleTest(&argc, argv);
-  if (communicator.rank() != 0) {  // one report, from rank 0
-    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
-    delete listeners.Release(listeners.default_result_printer());
-  }
-  const int failed = RUN_ALL_TESTS();
-  return static_cast<int>(communicator.max(failed));
-}

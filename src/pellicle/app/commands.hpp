@@ -6,6 +6,8 @@
 
 namespace pellicle {
 
+class Communicator;
+
 struct RunOptions {
   std::string case_path;  //!< empty: the built-in default case
   std::string out_dir;    //!< empty: the case's output.directory
@@ -15,6 +17,8 @@ struct RunOptions {
   std::string restart;              //!< checkpoint to continue from; empty: start fresh
   double checkpoint_interval = -1;  //!< > 0 overrides output.checkpoint_interval
   bool overwrite = false;           //!< replace another run's files in the output directory
+  //! The ranks when started by mpirun (builds with MPI), else null.
+  const Communicator* world = nullptr;
 };
 
 int command_run(const RunOptions& options);

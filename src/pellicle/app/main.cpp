@@ -3,11 +3,16 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/log.hpp"
+#ifdef PELLICLE_WITH_MPI
+#include "pellicle/dist/communicator.hpp"
+#endif
 
 namespace {
 
@@ -30,6 +35,13 @@ CLI::Validator thread_count() {
         return "";
       },
       "INT in [1, " + std::to_string(processors) + "]");
+}
+
+//! Ranks mpirun (OpenMPI) or another launcher (PMI) started this process among; 0: none.
+int launched_ranks() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+    if (const char* value = std::getenv(name)) return std::atoi(value);
+  return std::getenv("PMIX_RANK") ? 1 : 0;
 }
 
 }  // namespace
@@ -143,6 +155,22 @@ int main(int argc, char** argv) {
     return code == 0 ? kExitOk : kExitBadInput;
   }
 
+#ifdef PELLICLE_WITH_MPI
+  // A run started by mpirun is distributed over its ranks (MPI lives until main returns).
+  std::optional<Communicator> world;
+  if (*run_cmd && launched_ranks() > 0) {
+    world.emplace(argc, argv);
+    run.world = &*world;
+  }
+#else
+  if (*run_cmd && launched_ranks() > 1) {
+    std::fprintf(stderr,
+                 "pellicle: error: started on %d ranks, but this build has no MPI (configure "
+                 "with PELLICLE_MPI=ON and OpenMPI installed: scripts/setup installs it)\n",
+                 launched_ranks());
+    return kExitBadInput;
+  }
+#endif
   try {
     if (*run_cmd) return command_run(run);
     if (*check_cmd) return command_check(check);

@@ -18,10 +18,45 @@
 #include "pellicle/io/run.hpp"
 #include "pellicle/io/surface_case.hpp"
 #include "pellicle/io/vtk_writer.hpp"
+#ifdef PELLICLE_WITH_MPI
+#include "pellicle/dist/distributed_run.hpp"
+#endif
 
 namespace pellicle {
 
 namespace {
+
+int world_rank(const RunOptions& o) {
+#ifdef PELLICLE_WITH_MPI
+  if (o.world) return o.world->rank();
+#endif
+  return 0;
+}
+
+int world_size(const RunOptions& o) {
+#ifdef PELLICLE_WITH_MPI
+  if (o.world) return o.world->size();
+#endif
+  return 1;
+}
+
+//! What a distributed run does not write yet, refused before anything runs.
+template <int D>
+void refuse_distributed_outputs(const Case<D>& c, const RunOptions& o) {
+  const SourceLocation where{c.file, 0, 0};
+  if (!c.probes.empty())
+    throw InputError(where, "probe",
+                     "probes cannot be written by a run on more than one rank yet; run without "
+                     "mpirun, or remove the [[probe]] tables");
+  if (c.output.grid_snapshots)
+    throw InputError(where, "output.grid_snapshots",
+                     "grid snapshots cannot be written by a run on more than one rank yet");
+  if (c.output.checkpoint_interval > 0.0)
+    throw InputError(
+        where, o.checkpoint_interval > 0.0 ? "--checkpoint-interval" : "output.checkpoint_interval",
+        "checkpoints cannot be written by a run on more than one rank yet (a run "
+        "on more ranks can continue from a one-process checkpoint with --restart)");
+}
 
 const char* kinematics_name(Kinematics k) {
   switch (k) {
@@ -150,9 +185,32 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     std::printf("check     ok\n");
     return kExitOk;
   }
-  if (!o.quiet) print_summary(c, *simulation, stderr);
-  claim_output_directory(c.output.directory, o.overwrite, SourceLocation{c.file, 0, 0},
-                         o.out_dir.empty() ? "output.directory" : "--out");
+  const bool lead = world_rank(o) == 0, distributed = world_size(o) > 1;
+  if (!o.quiet && lead) print_summary(c, *simulation, stderr);
+  const long total_points = simulation->point_count();
+#ifdef PELLICLE_WITH_MPI
+  if (distributed) {
+    refuse_distributed_outputs(c, o);
+    try {
+      distribute(*simulation, *o.world);
+    } catch (const SetupError& e) {
+      throw InputError(SourceLocation{c.file, 0, 0}, "", e.what());
+    }
+  }
+#endif
+  // Rank 0 claims the directory; the others learn whether it could.
+  std::exception_ptr refused;
+  if (lead) {
+    try {
+      claim_output_directory(c.output.directory, o.overwrite, SourceLocation{c.file, 0, 0},
+                             o.out_dir.empty() ? "output.directory" : "--out");
+    } catch (...) {
+      refused = std::current_exception();
+    }
+  }
+  if (distributed && simulation->collective()->max(refused ? 1.0 : 0.0) > 0.0 && !lead)
+    return kExitBadInput;
+  if (refused) std::rethrow_exception(refused);
   // From here a file that cannot be written (a full disk) is an output error (exit 1), not
   // a problem of the input.
   try {
@@ -163,31 +221,56 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     const std::string checkpoint_path = c.output.directory + "/checkpoint.h5";
     RunControl control;
     control.case_hash = header.case_hash;
-    control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
+    if (!distributed)
+      control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
     control.checkpoint_interval = c.output.checkpoint_interval;
     control.stop = catch_stop_signals();
+    control.ranks = simulation->collective();
     const RunStatistics r =
-        run_simulation(*simulation, output, o.quiet ? nullptr : &progress, control);
+        run_simulation(*simulation, output, o.quiet || !lead ? nullptr : &progress, control);
     if (r.interrupted_by) {
-      std::fprintf(stderr,
-                   "pellicle: interrupted (signal %d) at t=%g, step %ld; continue with "
-                   "--restart %s\n",
-                   r.interrupted_by, simulation->time(), simulation->step_count(),
-                   checkpoint_path.c_str());
+      if (lead && distributed)
+        std::fprintf(stderr, "pellicle: interrupted (signal %d) at t=%g, step %ld\n",
+                     r.interrupted_by, simulation->time(), simulation->step_count());
+      else if (lead)
+        std::fprintf(stderr,
+                     "pellicle: interrupted (signal %d) at t=%g, step %ld; continue with "
+                     "--restart %s\n",
+                     r.interrupted_by, simulation->time(), simulation->step_count(),
+                     checkpoint_path.c_str());
       return 128 + r.interrupted_by;
     }
+    if (!lead) return kExitOk;
     if (!o.quiet)
-      std::fprintf(stderr, "done      %ld steps in %.2f s, %.3g particle-steps/s\n",
-                   simulation->step_count(), r.wall_seconds, r.particle_steps_per_second);
+      std::fprintf(stderr, "done      %ld steps in %.2f s, %.3g particle-steps/s on %d rank%s\n",
+                   simulation->step_count(), r.wall_seconds,
+                   r.wall_seconds > 0.0 ? static_cast<double>(total_points) *
+                                              simulation->step_count() / r.wall_seconds
+                                        : 0.0,
+                   world_size(o), distributed ? "s" : "");
     std::printf("results   %s\n", output.directory().c_str());
     return kExitOk;
   } catch (const NumericalError& e) {
+#ifdef PELLICLE_WITH_MPI
+    if (distributed) {  // the other ranks wait in a collective call: stop them all
+      std::fprintf(stderr, "pellicle: error on rank %d: %s\n", world_rank(o), e.what());
+      std::fflush(stderr);
+      o.world->abort(kExitNumericalFailure);
+    }
+#endif
     std::fprintf(stderr, "pellicle: error: %s\n", e.what());
     std::fprintf(stderr, "pellicle: the history and last snapshot up to the failure are in %s\n",
                  c.output.directory.c_str());
     return kExitNumericalFailure;
-  } catch (const std::exception&) {  // an output error: the run cannot go on
+  } catch (const std::exception& e) {  // an output error: the run cannot go on
     mark_output_directory_failed(c.output.directory);
+#ifdef PELLICLE_WITH_MPI
+    if (distributed) {
+      std::fprintf(stderr, "pellicle: error on rank %d: %s\n", world_rank(o), e.what());
+      std::fflush(stderr);
+      o.world->abort(1);  // an output error's exit code, as main gives it
+    }
+#endif
     throw;
   }
 }
@@ -205,10 +288,10 @@ int run_or_check(const RunOptions& o, bool check_only) {
     }
     return case_dimension(*source) == 2 ? run_case<2>(*source, o, check_only)
                                         : run_case<3>(*source, o, check_only);
-  } catch (const InputError& e) {
-    return report_input_error(e);
+  } catch (const InputError& e) {  // every rank finds the same problem; rank 0 reports it
+    return world_rank(o) == 0 ? report_input_error(e) : kExitBadInput;
   } catch (const SetupError& e) {
-    return report_input_error(e);
+    return world_rank(o) == 0 ? report_input_error(e) : kExitBadInput;
   }
 }
 

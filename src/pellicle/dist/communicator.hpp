@@ -4,9 +4,11 @@
 
 #include <vector>
 
+#include "pellicle/core/collective.hpp"
+
 namespace pellicle {
 
-class Communicator {
+class Communicator final : public Collective {
  public:
   //! MPI_Init on construction (with the program's arguments), MPI_Finalize on destruction;
   //! one per program.
@@ -15,15 +17,27 @@ class Communicator {
   Communicator(const Communicator&) = delete;
   Communicator& operator=(const Communicator&) = delete;
 
-  int rank() const { return rank_; }
-  int size() const { return size_; }
+  int rank() const override { return rank_; }
+  int size() const override { return size_; }
 
-  //! Element-wise sums over the ranks, the same on every rank: each rank's values are added
-  //! in rank order, so the result does not depend on the MPI library's reduction tree.
-  void sum_in_rank_order(std::vector<double>& values) const;
-  void sum(std::vector<long>& values) const;
-  double max(double value) const;
-  double min(double value) const;
+  void sum_in_rank_order(std::vector<double>& values) const override;
+  void sum(std::vector<long>& values) const override;
+  double max(double value) const override;
+  double min(double value) const override;
+
+  //! Point-to-point: send each outgoing buffer to its rank and receive each incoming buffer
+  //! (sized by the caller) from its rank, all at once; returns when all have arrived.
+  struct Message {
+    int rank = 0;
+    std::vector<double> values;
+  };
+  void exchange(const std::vector<Message>& outgoing, std::vector<Message>& incoming) const;
+  //! Every rank sends to_rank[r] to rank r and gets what each rank sent it, in from_rank[r].
+  void all_to_all(const std::vector<std::vector<double>>& to_rank,
+                  std::vector<std::vector<double>>& from_rank) const;
+  //! Stop every rank of the run with this exit code (a failure one rank found, which the
+  //! others, waiting in a collective call, cannot learn of).
+  [[noreturn]] void abort(int exit_code) const;
 
  private:
   int rank_ = 0, size_ = 1;

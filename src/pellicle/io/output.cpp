@@ -1,5 +1,7 @@
 #include "pellicle/io/output.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,16 +19,46 @@ namespace pellicle {
 namespace {
 const char* axis_names = "xyz";
 
+//! Per body: its mass, Σ m x and Σ m v, then its material's history sums; over every rank of a
+//! distributed run.
 template <int D>
-Vec<D> body_sum(const Particles<D>& p, const BodyInfo<D>& body, bool velocity, double& mass) {
-  Vec<D> s = Vec<D>::Zero();
-  mass = 0.0;
-  for (long i = body.begin; i < body.end; ++i) {
-    s += p.mass[i] * (velocity ? p.velocity[i] : p.position[i]);
-    mass += p.mass[i];
+struct BodySums {
+  std::vector<double> values;
+  std::vector<std::size_t> first;  //!< where each body's values start
+  std::vector<long> points;        //!< each body's points
+
+  explicit BodySums(const Simulation<D>& s) {
+    const auto& p = s.points();
+    for (const auto& body : p.bodies) {
+      first.push_back(values.size());
+      points.push_back(body.count());
+      double mass = 0.0;
+      Vec<D> mx = Vec<D>::Zero(), mv = Vec<D>::Zero();
+      for (long i = body.begin; i < body.end; ++i) {
+        mx += p.mass[i] * p.position[i];
+        mv += p.mass[i] * p.velocity[i];
+        mass += p.mass[i];
+      }
+      values.push_back(mass);
+      values.insert(values.end(), mx.data(), mx.data() + D);
+      values.insert(values.end(), mv.data(), mv.data() + D);
+      s.material(body.material).history_sums(p, body.begin, body.end, values);
+    }
+    if (const Collective* ranks = s.collective()) {
+      ranks->sum_in_rank_order(values);
+      ranks->sum(points);
+    }
   }
-  return s;
-}
+  double mass(int b) const { return values[first[b]]; }
+  Vec<D> com(int b) const { return Vec<D>(values.data() + first[b] + 1) / mass(b); }
+  Vec<D> velocity(int b) const { return Vec<D>(values.data() + first[b] + 1 + D) / mass(b); }
+  const double* material_sums(int b) const { return values.data() + first[b] + 1 + 2 * D; }
+  long total_points() const {
+    long n = 0;
+    for (long k : points) n += k;
+    return n;
+  }
+};
 
 }  // namespace
 
@@ -47,12 +79,19 @@ OutputWriter<D>::OutputWriter(const OutputSettings& settings, const Simulation<D
     : settings_(settings),
       probes_(std::move(probes)),
       points_series_(settings.directory + "/points.pvd"),
-      grid_series_(settings.directory + "/grid.pvd") {
+      grid_series_(settings.directory + "/grid.pvd"),
+      rank_(simulation.collective() ? simulation.collective()->rank() : 0),
+      ranks_(simulation.collective() ? simulation.collective()->size() : 1) {
   std::error_code ec;
   std::filesystem::create_directories(settings_.directory, ec);
   if (ec) throw std::runtime_error("cannot create " + settings_.directory + ": " + ec.message());
-  history_.open(settings_.directory + "/history.csv", std::ios::trunc);
-  if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
+  // Rank 0 writes the history (a null stream elsewhere: every rank takes part in the sums).
+  if (rank_ == 0) {
+    history_.open(settings_.directory + "/history.csv", std::ios::trunc);
+    if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
+  } else {
+    history_.setstate(std::ios::badbit);
+  }
   history_ << "time,step,dt,kinetic,strain,internal,gravitational,total";
   for (int d = 0; d < D; ++d) history_ << ",momentum_" << axis_names[d];
   for (const auto& b : simulation.points().bodies) {
@@ -87,17 +126,17 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
            << ',' << s.total();
   for (int d = 0; d < D; ++d) history_ << ',' << s.momentum[d];
   const auto& p = simulation.points();
-  for (const auto& b : p.bodies) {
-    double mass = 0.0;
-    const Vec<D> com = body_sum(p, b, false, mass) / mass;
-    const Vec<D> vel = body_sum(p, b, true, mass) / mass;
+  const BodySums<D> sums(simulation);
+  const int bodies = static_cast<int>(p.bodies.size());
+  for (int b = 0; b < bodies; ++b) {
+    const Vec<D> com = sums.com(b), vel = sums.velocity(b);
     for (int d = 0; d < D; ++d) history_ << ',' << com[d];
     for (int d = 0; d < D; ++d) history_ << ',' << vel[d];
   }
   std::vector<double> values;
-  for (const auto& b : p.bodies) {
+  for (int b = 0; b < bodies; ++b) {
     values.clear();
-    simulation.material(b.material).history_values(p, b.begin, b.end, values);
+    simulation.material(p.bodies[b].material).history_from_sums(sums.material_sums(b), values);
     for (double v : values) history_ << ',' << v;
   }
   if (const auto* forces = simulation.contact_forces())
@@ -114,17 +153,30 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     for (double v : probe.values(simulation)) history_ << ',' << v;
   history_ << '\n';
   history_.flush();
-  if (!history_) throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
+  if (rank_ == 0 && !history_)
+    throw std::runtime_error("cannot write " + settings_.directory + "/history.csv");
   last_history_step_ = simulation.step_count();
   next_history_ = simulation.time() + settings_.history_interval;
 }
 
 template <int D>
 void OutputWriter<D>::write_snapshot(const Simulation<D>& simulation) {
-  char name[32];
-  std::snprintf(name, sizeof name, "points_%06d.vtu", snapshots_);
-  write_points_vtu<D>(settings_.directory + "/" + name, simulation);
-  points_series_.add(simulation.time(), name);
+  char name[48];
+  if (ranks_ == 1) {
+    std::snprintf(name, sizeof name, "points_%06d.vtu", snapshots_);
+    write_points_vtu<D>(settings_.directory + "/" + name, simulation);
+  } else {  // a piece per rank, and the file that joins them
+    std::snprintf(name, sizeof name, "points_%06d_r%04d.vtu", snapshots_, rank_);
+    write_points_vtu<D>(settings_.directory + "/" + name, simulation);
+    std::vector<std::string> pieces;
+    for (int r = 0; r < ranks_; ++r) {
+      std::snprintf(name, sizeof name, "points_%06d_r%04d.vtu", snapshots_, r);
+      pieces.push_back(name);
+    }
+    std::snprintf(name, sizeof name, "points_%06d.pvtu", snapshots_);
+    if (rank_ == 0) write_points_pvtu<D>(settings_.directory + "/" + name, simulation, pieces);
+  }
+  if (rank_ == 0) points_series_.add(simulation.time(), name);
   if (settings_.grid_snapshots) {
     std::snprintf(name, sizeof name, "grid_%06d.vti", snapshots_);
     write_grid_vti<D>(settings_.directory + "/" + name, simulation.grid(),
@@ -149,11 +201,17 @@ void OutputWriter<D>::after_step(const Simulation<D>& simulation) {
 template <int D>
 void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string& status,
                              const std::string& case_hash, double wall_seconds) {
+  // A distributed run's failure is one rank's: the others wait in the step, so nothing that
+  // needs them is written (the history up to the failure is on disk).
+  if (ranks_ > 1 && status != "completed" && status != "interrupted") return;
   if (last_history_step_ != simulation.step_count()) write_history_row(simulation);
   if (last_snapshot_step_ != simulation.step_count()) write_snapshot(simulation);
   const SystemState<D> s = simulation.state();
   const auto& p = simulation.points();
-  const double point_steps = static_cast<double>(p.size()) * simulation.step_count();
+  const BodySums<D> sums(simulation);
+  if (rank_ != 0) return;
+  const long points = sums.total_points();
+  const double point_steps = static_cast<double>(points) * simulation.step_count();
   std::ostringstream j;
   j << "{\n";
   j << "  \"version\": " << json_string(PELLICLE_VERSION) << ",\n";
@@ -161,7 +219,9 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
   j << "  \"case_hash\": " << json_string(case_hash) << ",\n";
   j << "  \"time\": " << json_number(simulation.time()) << ",\n";
   j << "  \"steps\": " << simulation.step_count() << ",\n";
-  j << "  \"points\": " << p.size() << ",\n";
+  j << "  \"points\": " << points << ",\n";
+  j << "  \"ranks\": " << ranks_ << ",\n";
+  j << "  \"threads\": " << omp_get_max_threads() << ",\n";
   j << "  \"wall_seconds\": " << json_number(wall_seconds) << ",\n";
   j << "  \"particle_steps_per_second\": "
     << json_number(wall_seconds > 0.0 ? point_steps / wall_seconds : 0.0) << ",\n";
@@ -172,12 +232,10 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
   j << "  \"momentum\": [";
   for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(s.momentum[d]);
   j << "],\n  \"bodies\": {";
-  for (std::size_t b = 0; b < p.bodies.size(); ++b) {
-    double mass = 0.0;
-    const Vec<D> com = body_sum(p, p.bodies[b], false, mass) / mass;
-    const Vec<D> vel = body_sum(p, p.bodies[b], true, mass) / mass;
+  for (int b = 0; b < static_cast<int>(p.bodies.size()); ++b) {
+    const Vec<D> com = sums.com(b), vel = sums.velocity(b);
     j << (b ? ",\n" : "\n") << "    " << json_string(p.bodies[b].name)
-      << ": {\"points\": " << p.bodies[b].count() << ", \"mass\": " << json_number(mass)
+      << ": {\"points\": " << sums.points[b] << ", \"mass\": " << json_number(sums.mass(b))
       << ", \"com\": [";
     for (int d = 0; d < D; ++d) j << (d ? ", " : "") << json_number(com[d]);
     j << "], \"velocity\": [";

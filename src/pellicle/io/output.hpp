@@ -48,6 +48,7 @@ class OutputWriter final : public StepObserver<D> {
   double next_history_ = 0.0, next_snapshot_ = 0.0;
   long last_history_step_ = -1, last_snapshot_step_ = -1;
   int snapshots_ = 0;
+  int rank_ = 0, ranks_ = 1;   //!< of a distributed run; rank 0 writes all but the pieces
   std::vector<long> escaped_;  //!< per enclosed body: most filling points seen outside
 };
 

@@ -50,10 +50,9 @@ RunStatistics run_simulation(Engine& engine, Output& output, ProgressListener* p
       }
       engine.step();
       point_steps += static_cast<double>(engine.point_count());
-      if (control.stop && *control.stop) {
-        signal = *control.stop;
-        break;
-      }
+      signal = control.stop ? *control.stop : 0;
+      if (control.ranks) signal = static_cast<int>(control.ranks->max(signal));
+      if (signal) break;
       if (control.checkpoint && engine.time() + 1e-9 * engine.last_dt() >= next_checkpoint) {
         control.checkpoint();
         next_checkpoint = engine.time() + control.checkpoint_interval;

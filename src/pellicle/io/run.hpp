@@ -13,6 +13,7 @@
 #include <functional>
 #include <string>
 
+#include "pellicle/core/collective.hpp"
 #include "pellicle/core/progress.hpp"
 
 namespace pellicle {
@@ -26,6 +27,9 @@ struct RunControl {
   //! Set (to the signal number) by a signal handler: the run stops after the current step,
   //! writes a final checkpoint and its summary with status "interrupted".
   const volatile std::sig_atomic_t* stop = nullptr;
+  //! A distributed run's ranks: they agree on a stop signal after every step (a signal
+  //! reaches them at different moments), so all stop after the same step.
+  const Collective* ranks = nullptr;
 };
 
 struct RunStatistics {

@@ -86,18 +86,24 @@ void write_declared_columns(AtomicFileWriter& file, const Particles<D>& p) {
   }
 }
 
+//! Snapshot fields the bodies' materials compute, each once, in the order of first offer.
+template <int D>
+std::vector<SnapshotField> material_fields(const Simulation<D>& s) {
+  std::vector<SnapshotField> fields;
+  for (const auto& b : s.points().bodies)
+    for (const auto& f : s.material(b.material).snapshot_fields())
+      if (std::none_of(fields.begin(), fields.end(),
+                       [&](const SnapshotField& e) { return e.name == f.name; }))
+        fields.push_back(f);
+  return fields;
+}
+
 //! What materials compute for snapshots (membrane strain and stress in the local axes), over
 //! every point, zero where a body's material does not compute it.
 template <int D>
 void write_material_fields(AtomicFileWriter& file, const Simulation<D>& s) {
   const Particles<D>& p = s.points();
-  std::vector<SnapshotField> fields;
-  for (const auto& b : p.bodies)
-    for (const auto& f : s.material(b.material).snapshot_fields())
-      if (std::none_of(fields.begin(), fields.end(),
-                       [&](const SnapshotField& e) { return e.name == f.name; }))
-        fields.push_back(f);
-  for (const auto& field : fields) {
+  for (const auto& field : material_fields(s)) {
     stream_data_array<double>(
         file, "Float64", field.name, field.components, p.position.size(),
         [&](std::size_t first, std::size_t last, double* out) {
@@ -187,6 +193,49 @@ void write_points_vtu(const std::string& path, const Simulation<D>& simulation) 
 }
 
 template <int D>
+void write_points_pvtu(const std::string& path, const Simulation<D>& simulation,
+                       const std::vector<std::string>& pieces) {
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n<PUnstructuredGrid GhostLevel=\"0\">\n";
+  auto array = [&out](const char* type, const std::string& name, int components) {
+    out += "<PDataArray type=\"" + std::string(type) + "\" Name=\"" + name +
+           "\" NumberOfComponents=\"" + std::to_string(components) + "\"/>\n";
+  };
+  out += "<PPoints>\n";
+  array("Float64", "position", 3);
+  out += "</PPoints>\n<PPointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
+  // In write_points_vtu's order.
+  array("Float64", "velocity", 3);
+  for (const char* name : {"mass", "volume", "density"}) array("Float64", name, 1);
+  array("Float64", "stress", 6);
+  array("Float64", "pressure", 1);
+  array("Float64", "von_mises", 1);
+  array("Int32", "body", 1);
+  array("UInt8", "fluid", 1);
+  const PointColumns& columns = simulation.points().columns;
+  for (int c = 0; c < columns.count(); ++c) {
+    if (!columns.spec(c).snapshot) continue;
+    const ColumnShape shape = columns.shape(c);
+    array("Float64", columns.spec(c).name,
+          shape == ColumnShape::vector      ? 3
+          : shape == ColumnShape::symmetric ? 6
+                                            : columns.components(c));
+  }
+  for (const auto& field : material_fields(simulation))
+    array("Float64", field.name, field.components);
+  out += "</PPointData>\n<PCells>\n";
+  array("Int32", "connectivity", 1);
+  array("Int32", "offsets", 1);
+  array("UInt8", "types", 1);
+  out += "</PCells>\n";
+  for (const auto& piece : pieces) out += "<Piece Source=\"" + piece + "\"/>\n";
+  out += "</PUnstructuredGrid>\n</VTKFile>\n";
+  write_file_atomically(path, out);
+}
+
+template <int D>
 void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses) {
   const IVec<D> n = grid.nodes();
   const Vec<D> origin = grid.node_position(IVec<D>::Zero());
@@ -225,6 +274,10 @@ void PvdCollection::add(double time, const std::string& file) {
 
 template void write_points_vtu<2>(const std::string&, const Simulation<2>&);
 template void write_points_vtu<3>(const std::string&, const Simulation<3>&);
+template void write_points_pvtu<2>(const std::string&, const Simulation<2>&,
+                                   const std::vector<std::string>&);
+template void write_points_pvtu<3>(const std::string&, const Simulation<3>&,
+                                   const std::vector<std::string>&);
 template void write_grid_vti<2>(const std::string&, const Grid<2>&, const NodeStresses<2>&);
 template void write_grid_vti<3>(const std::string&, const Grid<3>&, const NodeStresses<3>&);
 

@@ -18,6 +18,13 @@ namespace pellicle {
 template <int D>
 void write_points_vtu(const std::string& path, const Simulation<D>& simulation);
 
+//! A distributed run's particle snapshot: the file that joins the ranks' pieces (each a
+//! write_points_vtu of that rank's points, named relative to the .pvtu) and declares their
+//! arrays, the same arrays write_points_vtu writes.
+template <int D>
+void write_points_pvtu(const std::string& path, const Simulation<D>& simulation,
+                       const std::vector<std::string>& pieces);
+
 //! Grid snapshot on the node lattice (ghost layers included): nodal mass and velocity, and
 //! the point stresses projected onto the nodes (grid_projection.hpp): `pressure`, `stress`
 //! and `membrane_stress`, tensors as ParaView's 6-component symmetric tensors.

@@ -1,25 +1,49 @@
 #include "pellicle/mpm/grid.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace pellicle {
 
 template <int D>
 Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces)
     : lower_(lower), upper_(upper), h_(cell), inv_h_(1.0 / cell), faces_(faces) {
-  node_count_ = 1;
+  IVec<D> count;
   for (int d = 0; d < D; ++d) {
     cells_[d] = static_cast<int>(std::lround((upper[d] - lower[d]) / cell));
-    nodes_[d] = cells_[d] + 1 + 2 * kGhost;
+    count[d] = cells_[d] + 1 + 2 * kGhost;
+  }
+  origin_ = lower_ - Vec<D>::Constant(kGhost * h_);
+  allocate(IVec<D>::Zero(), count);
+}
+
+template <int D>
+Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last) const {
+  for (int d = 0; d < D; ++d)
+    if (first[d] < first_[d] || last[d] >= first_[d] + nodes_[d] || last[d] < first[d])
+      throw std::invalid_argument("a grid window must lie within the grid");
+  Grid<D> w = *this;
+  w.allocate(first, last - first + IVec<D>::Ones());
+  return w;
+}
+
+template <int D>
+void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
+  first_ = first;
+  nodes_ = count;
+  node_count_ = 1;
+  for (int d = 0; d < D; ++d) {
     strides_[d] = node_count_;
     node_count_ *= nodes_[d];
   }
-  origin_ = lower_ - Vec<D>::Constant(kGhost * h_);
   mass.assign(node_count_, 0.0);
   momentum.assign(node_count_, Vec<D>::Zero());
   force.assign(node_count_, Vec<D>::Zero());
   velocity.assign(node_count_, Vec<D>::Zero());
   velocity_change.assign(node_count_, Vec<D>::Zero());
+  constraints_.clear();
+  mirrors_.clear();
+  prescribed_.clear();
 
   // Nodes on a constrained face take the face's condition; corners collect the conditions of
   // every face they touch.
@@ -49,7 +73,12 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
   // Ghost nodes beyond a constrained face are slaved to their mirror images inside:
   // v_ghost = R v_mirror, R = −I at a fixed face (odd extension: zero velocity on the face)
   // and the reflection of the normal component at a slip face (even extension). Axis by
-  // axis, so corner ghosts reach the interior through two reflections.
+  // axis, so corner ghosts reach the interior through two reflections. A window keeps the
+  // pairs it holds both nodes of (a patch is wider than the ghost layers, so a ghost it
+  // holds has its image too).
+  const auto stored = [&](const IVec<D>& idx) {
+    return ((idx - first_).array() >= 0).all() && ((idx - first_).array() < nodes_.array()).all();
+  };
   for (int d = 0; d < D; ++d) {
     for (int side = 0; side < 2; ++side) {
       const FaceCondition condition = faces_[2 * d + side];
@@ -61,7 +90,7 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
         const int k = side == 0 ? face - idx[d] : idx[d] - face;  // layers beyond the face
         if (k < 1) continue;
         idx[d] = side == 0 ? face + k : face - k;
-        mirrors_.push_back({n, flatten(idx), flips});
+        if (stored(idx)) mirrors_.push_back({n, flatten(idx), flips});
       }
     }
   }

@@ -30,12 +30,21 @@ class Grid {
 
   Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces);
 
+  //! The part of this grid a rank of a distributed run stores: nodes `first` to `last`
+  //! (inclusive, in grid index space, ghosts included). It keeps the whole grid's origin,
+  //! domain and faces, and takes node indices in the whole grid's index space, so a point's
+  //! cell units and kernel weights are bitwise those of the whole grid; only the storage and
+  //! flat indices are local. The face conditions apply where the window reaches a face.
+  Grid window(const IVec<D>& first, const IVec<D>& last) const;
+
   double cell() const { return h_; }
   const Vec<D>& lower() const { return lower_; }
   const Vec<D>& upper() const { return upper_; }
   const IVec<D>& cells() const { return cells_; }  //!< cells across the domain per axis
-  const IVec<D>& nodes() const { return nodes_; }  //!< nodes per axis including ghosts
+  const IVec<D>& nodes() const { return nodes_; }  //!< nodes per axis stored (ghosts included)
   long node_count() const { return node_count_; }
+  //! Grid index of the first stored node: zero, except in a window.
+  const IVec<D>& first_node() const { return first_; }
   //! Position of node (i, j[, k]) given in grid index space (ghosts included).
   Vec<D> node_position(const IVec<D>& index) const {
     return origin_ + h_ * index.template cast<double>();
@@ -43,15 +52,17 @@ class Grid {
   Vec<D> node_position(long node) const { return node_position(unflatten(node)); }
   //! Grid coordinates ξ = (x − origin)/h used by the kernels.
   Vec<D> to_cell_units(const Vec<D>& x) const { return (x - origin_) * inv_h_; }
+  //! Storage index of the node with grid index `index`.
   long flatten(const IVec<D>& index) const {
-    long n = index[D - 1];
-    for (int d = D - 2; d >= 0; --d) n = n * nodes_[d] + index[d];
+    long n = index[D - 1] - first_[D - 1];
+    for (int d = D - 2; d >= 0; --d) n = n * nodes_[d] + (index[d] - first_[d]);
     return n;
   }
+  //! Grid index of the node stored at `node`.
   IVec<D> unflatten(long node) const {
     IVec<D> index;
     for (int d = 0; d < D; ++d) {
-      index[d] = static_cast<int>(node % nodes_[d]);
+      index[d] = static_cast<int>(node % nodes_[d]) + first_[d];
       node /= nodes_[d];
     }
     return index;
@@ -123,9 +134,12 @@ class Grid {
       if (flips & (1u << d)) r[d] = -r[d];
     return r;
   }
+  //! Storage, face constraints and mirrors of the nodes first_ to first_ + nodes_ − 1.
+  void allocate(const IVec<D>& first, const IVec<D>& count);
+
   Vec<D> lower_, upper_, origin_;
   double h_, inv_h_;
-  IVec<D> cells_, nodes_;
+  IVec<D> cells_, nodes_, first_ = IVec<D>::Zero();
   std::array<long, D> strides_{};
   long node_count_ = 0;
   FaceConditions<D> faces_;

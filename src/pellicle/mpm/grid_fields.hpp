@@ -22,6 +22,15 @@ class GridFields {
     body_grids_.assign(bodies.size(), centre_of_mass_);
     body_points_ = bodies;
   }
+  //! Every field on a copy of `grid` instead (a distributed run's window).
+  void replace_grid(const Grid<D>& grid) {
+    centre_of_mass_ = grid;
+    for (auto& g : body_grids_) g = grid;
+  }
+  //! New point ranges of the bodies' fields (points moved between ranks).
+  void set_body_ranges(const std::vector<PointRange>& bodies) {
+    if (per_body()) body_points_ = bodies;
+  }
   bool per_body() const { return !body_grids_.empty(); }
   //! Number of fields the points are split into (1, or one per body).
   int count() const { return per_body() ? static_cast<int>(body_grids_.size()) : 1; }

@@ -48,7 +48,6 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
       rigid.push_back(static_cast<int>(b));
       rigid_velocity.push_back(points_.velocity[body.begin]);
     }
-    if (material.density_from_cells()) cell_density_ranges_.emplace_back(body.begin, body.end);
     if (material.is_membrane() && !(body.frames && normal_.valid()))
       throw SetupError("membrane body '" + body.name + "' needs a frame estimator");
   }
@@ -59,10 +58,9 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   // density and energy: settle them once before the first step (a zero step changes nothing
   // else).
   update_frames();
+  points_changed();
   for (int b = 0; b < static_cast<int>(points_.bodies.size()); ++b) {
     const auto& body = points_.bodies[b];
-    for (long first = body.begin; first < body.end; first += kBlockPoints)
-      blocks_.push_back({b, first, std::min(first + kBlockPoints, body.end)});
     const auto& material = *materials_[body.material];
     if (!material.stress_from_state()) continue;
     const std::vector<Mat<D>> no_gradient(body.count(), Mat<D>::Zero());
@@ -75,6 +73,27 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
                      body.end,
                      this->grid().cell()});
   }
+}
+
+template <int D>
+void Simulation<D>::points_changed() {
+  blocks_.clear();
+  cell_density_ranges_.clear();
+  std::vector<PointRange> ranges;
+  for (int b = 0; b < static_cast<int>(points_.bodies.size()); ++b) {
+    const auto& body = points_.bodies[b];
+    for (long first = body.begin; first < body.end; first += kBlockPoints)
+      blocks_.push_back({b, first, std::min(first + kBlockPoints, body.end)});
+    if (materials_[body.material]->density_from_cells())
+      cell_density_ranges_.emplace_back(body.begin, body.end);
+    ranges.push_back({body.begin, body.end});
+  }
+  fields_.set_body_ranges(ranges);
+}
+
+template <int D>
+void Simulation<D>::use_grid_window(const Grid<D>& window) {
+  fields_.replace_grid(window);
 }
 
 template <int D>
@@ -116,7 +135,8 @@ void Simulation<D>::step() {
   const double dt = time_step();  // 1 time_step
   stencils();                     // 2 stencils
   scheme_->advance(*this, dt);    // 3–7 to_grid, grid, to_points, remap, materials
-  observe(dt);                    // 8 observe
+  for (auto& hook : hooks_) hook->end_of_step(*this);
+  observe(dt);  // 8 observe
 }
 
 template <int D>
@@ -155,8 +175,14 @@ void Simulation<D>::to_grid(bool forces) {
   fields_.for_each_grid([](Grid<D>& g) { g.clear_prescribed(); });  // hooks set them anew
   for (int k = 0; k < fields_.count(); ++k)
     transfer_->to_grid(points_, gravity_, fields_.field(k), forces, fields_.points(k));
-  fields_.sum_to_centre_of_mass(true, forces);
+  scattered({true, true, forces});
   for (auto& hook : hooks_) hook->after_to_grid(*this);
+}
+
+template <int D>
+void Simulation<D>::scattered(ScatteredFields scattered) {
+  for (auto& hook : hooks_) hook->after_scatter(*this, scattered);
+  fields_.sum_to_centre_of_mass(scattered.mass, scattered.force);
 }
 
 template <int D>
@@ -168,7 +194,7 @@ template <int D>
 void Simulation<D>::forces_to_grid() {
   for (int k = 0; k < fields_.count(); ++k)
     transfer_->forces_to_grid(points_, gravity_, fields_.field(k), fields_.points(k));
-  fields_.sum_to_centre_of_mass(false, true);
+  scattered({false, false, true});
 }
 
 template <int D>
@@ -185,6 +211,7 @@ void Simulation<D>::to_points(double dt) {
     max_speed_ = std::max(max_speed_, transfer_->to_points(fields_.field(k), dt, points_, failure,
                                                            fields_.points(k)));
   if (failure.point >= 0) fail(failure.point, failure.what);
+  max_speed_ = global_max(max_speed_);
   for (auto& hook : hooks_) hook->after_to_points(*this);
 }
 
@@ -192,6 +219,8 @@ template <int D>
 void Simulation<D>::remap(double dt) {
   for (int k = 0; k < fields_.count(); ++k)
     transfer_->remap(points_, fields_.field(k), fields_.points(k));
+  for (auto& hook : hooks_) hook->after_scatter(*this, {false, true, false});
+  for (int k = 0; k < fields_.count(); ++k) fields_.field(k).velocities_from_momentum();
   if (fields_.per_body()) {
     fields_.sum_to_centre_of_mass(false, false);
     fields_.centre_of_mass().velocities_from_momentum();
@@ -359,7 +388,7 @@ double Simulation<D>::max_wave_speed() const {
   for (const auto& body : points_.bodies)
     wave = std::max(wave, materials_[body.material]->max_signal_speed(points_, body.begin, body.end,
                                                                       grid().cell()));
-  return wave;
+  return global_max(wave);
 }
 
 template <int D>
@@ -405,6 +434,13 @@ SystemState<D> Simulation<D>::state() const {
   for (const auto& body : points_.bodies) {
     s.strain += materials_[body.material]->strain_energy(points_, body.begin, body.end);
     s.internal += materials_[body.material]->internal_energy(points_, body.begin, body.end);
+  }
+  if (collective_) {
+    std::vector<double> sums{s.kinetic, s.strain, s.internal, s.gravitational};
+    for (int d = 0; d < D; ++d) sums.push_back(s.momentum[d]);
+    collective_->sum_in_rank_order(sums);
+    s.kinetic = sums[0], s.strain = sums[1], s.internal = sums[2], s.gravitational = sums[3];
+    for (int d = 0; d < D; ++d) s.momentum[d] = sums[4 + d];
   }
   return s;
 }

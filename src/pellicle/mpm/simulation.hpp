@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pellicle/core/collective.hpp"
 #include "pellicle/core/observer.hpp"
 #include "pellicle/core/types.hpp"
 #include "pellicle/mpm/contact/contact_model.hpp"
@@ -85,6 +86,17 @@ class Simulation final : private Stages {
   const std::vector<EnclosedBody<D>>& enclosed() const { return enclosed_; }
   std::vector<std::unique_ptr<StepHook<D>>>& hooks() { return hooks_; }
 
+  //! A distributed run: this simulation holds one rank's points and grid window, and every
+  //! quantity of the whole system (time step, energies, largest speeds) is reduced over
+  //! `ranks`, which must outlive the simulation. Null: a run on one process.
+  void set_collective(const Collective* ranks) { collective_ = ranks; }
+  const Collective* collective() const { return collective_; }
+  //! Store only a window of the grid (Grid::window): a distributed run's patch and halo.
+  void use_grid_window(const Grid<D>& window);
+  //! After points were added, removed or reordered (keeping each body contiguous and the
+  //! bodies' ranges up to date): rebuild what the step keeps per point range.
+  void points_changed();
+
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
   void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
 
@@ -146,6 +158,9 @@ class Simulation final : private Stages {
   //! The point with the largest wave speed (waves) or point speed (otherwise), for failures.
   long fastest_point(bool waves) const;
   [[noreturn]] void fail(long point, const std::string& what) const;
+  //! Hooks' after_scatter, then the centre-of-mass sums of per-body fields.
+  void scattered(ScatteredFields fields);
+  double global_max(double value) const { return collective_ ? collective_->max(value) : value; }
 
   SimulationSettings settings_;
   GridFields<D> fields_;
@@ -156,6 +171,7 @@ class Simulation final : private Stages {
   std::vector<std::unique_ptr<StepHook<D>>> hooks_;
   std::vector<EnclosedBody<D>> enclosed_;
   ContactModel<D>* contact_ = nullptr;  //!< one of hooks_, or null
+  const Collective* collective_ = nullptr;
   Vec<D> gravity_;
   std::vector<StepObserver<D>*> observers_;
 

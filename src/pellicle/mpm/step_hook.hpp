@@ -1,7 +1,8 @@
 #pragma once
 //! Hooks: what acts on the step at its named points without living in it — rigid bodies and
-//! other boundary conditions (mpm/boundary/), contact models (mpm/contact/), and later halo
-//! exchange. A new one is a class here plus its registration; step() does not change.
+//! other boundary conditions (mpm/boundary/), contact models (mpm/contact/), and the halo
+//! exchange and point migration of distributed runs (dist/). A new one is a class here plus
+//! its registration; step() does not change.
 
 #include <string>
 #include <utility>
@@ -20,16 +21,28 @@ using HookState = std::vector<std::pair<std::string, std::vector<double>>>;
 //! the strain rates).
 enum class GridPass { lagrangian, convected };
 
+//! Which node sums a scatter has just written (before anything is derived from them).
+struct ScatteredFields {
+  bool mass = false, momentum = false, force = false;
+};
+
 template <int D>
 class StepHook {
  public:
   virtual ~StepHook() = default;
+  //! Right after a scatter onto the grid fields (to_grid, the USF force pass, the MUSL
+  //! remap), before velocities or the centre-of-mass field are derived from the sums: where a
+  //! distributed run completes the sums of nodes its neighbours share.
+  virtual void after_scatter(Simulation<D>&, ScatteredFields) {}
   //! After `to_grid`: mass, momentum and forces are on the grid fields.
   virtual void after_to_grid(Simulation<D>&) {}
   //! After the grid velocities were updated (momentum solve, or the MUSL remap).
   virtual void after_grid_update(Simulation<D>&, GridPass, double /*dt*/) {}
   //! After `to_points`: points have their new positions and velocities.
   virtual void after_to_points(Simulation<D>&) {}
+  //! After stage `materials`, when no stage of the step reads its stencils any more: where a
+  //! distributed run moves points that left their patch to its owner.
+  virtual void end_of_step(Simulation<D>&) {}
   //! The hook needs each body in its own grid field (contact models).
   virtual bool needs_body_fields() const { return false; }
   //! Hooks that carry state from step to step name it (a checkpoint group); empty: none.

@@ -94,7 +94,8 @@ class Transfer {
   virtual void touched_nodes(const Grid<D>& grid, long begin, long end,
                              std::vector<long>& nodes) const = 0;
 
-  //! Stage `remap` (MUSL): convected grid velocity from the updated point velocities.
+  //! Stage `remap` (MUSL): the momentum of the updated point velocities on the grid, with
+  //! the mass of to_grid; the step then takes the convected velocity p/m (thesis eq 3.24).
   virtual void remap(const Particles<D>& points, Grid<D>& grid, PointRange range = {}) = 0;
 
   //! Point kinematics of stage `materials` for points [begin, end), from the grid's current

@@ -180,7 +180,6 @@ class TransferImpl final : public Transfer<D> {
       scatter<false, false, true, true>(points, Vec<D>::Zero(), grid, range);
     else
       scatter<false, false, false, true>(points, Vec<D>::Zero(), grid, range);
-    grid.velocities_from_momentum();
   }
 
   long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points, long begin, long end,

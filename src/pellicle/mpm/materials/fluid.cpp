@@ -183,23 +183,30 @@ double Fluid<D, Eos>::internal_energy(const Particles<D>& points, long begin, lo
 }
 
 template <int D, class Eos>
-void Fluid<D, Eos>::history_values(const Particles<D>& points, long begin, long end,
-                                   std::vector<double>& out) const {
-  double volume = 0.0;
-  for (long p = begin; p < end; ++p) volume += points.volume[p];
-  out.push_back(mean_pressure(points, begin, end));
-  out.push_back(volume);
-}
-
-template <int D, class Eos>
-double Fluid<D, Eos>::mean_pressure(const Particles<D>& points, long begin, long end) const {
+void Fluid<D, Eos>::history_sums(const Particles<D>& points, long begin, long end,
+                                 std::vector<double>& sums) const {
   double pv = 0.0, v = 0.0;
 #pragma omp parallel for reduction(+ : pv, v) schedule(static)
   for (long p = begin; p < end; ++p) {
     pv += points.volume[p] * pressure(points, p);
     v += points.volume[p];
   }
-  return v > 0.0 ? pv / v : 0.0;
+  sums.push_back(pv);
+  sums.push_back(v);
+}
+
+template <int D, class Eos>
+void Fluid<D, Eos>::history_from_sums(const double* sums, std::vector<double>& out) const {
+  out.push_back(sums[1] > 0.0 ? sums[0] / sums[1] : 0.0);  // Σ V p / Σ V
+  out.push_back(sums[1]);
+}
+
+template <int D, class Eos>
+double Fluid<D, Eos>::mean_pressure(const Particles<D>& points, long begin, long end) const {
+  std::vector<double> sums, values;
+  history_sums(points, begin, end, sums);
+  history_from_sums(sums.data(), values);
+  return values[0];
 }
 
 template <int D, class Eos>

@@ -60,8 +60,9 @@ class Fluid final : public Material<D> {
   bool stress_from_state() const override { return true; }
   //! history.csv: `<body>.pressure` (mean_pressure) and `<body>.volume` (Σ V).
   std::vector<std::string> history_names() const override { return {"pressure", "volume"}; }
-  void history_values(const Particles<D>& points, long begin, long end,
-                      std::vector<double>& out) const override;
+  void history_sums(const Particles<D>& points, long begin, long end,
+                    std::vector<double>& sums) const override;
+  void history_from_sums(const double* sums, std::vector<double>& out) const override;
   std::string flip_caution() const override {
     return "a fluid moved by FLIP, whose ringing instability (Brackbill 1988) grows noise in "
            "slow flow at a rate of about c/h; velocity_update = \"apic\" with a B-spline "

@@ -115,10 +115,21 @@ class Material {
   //! stress before: it is settled by a zero step before the first step.
   virtual bool stress_from_state() const { return false; }
 
-  //! Per-body history.csv columns of this model (`<body>.<name>`), and their values over
-  //! the body's points [begin, end), in the same order.
+  //! Per-body history.csv columns of this model (`<body>.<name>`). Their values come from
+  //! sums over the body's points, so that a body spread over the ranks of a distributed run
+  //! adds its ranks' sums: history_sums appends the sums of points [begin, end),
+  //! history_from_sums turns a whole body's sums into the columns' values, in order.
   virtual std::vector<std::string> history_names() const { return {}; }
-  virtual void history_values(const Particles<D>&, long, long, std::vector<double>&) const {}
+  virtual void history_sums(const Particles<D>&, long /*begin*/, long /*end*/,
+                            std::vector<double>& /*sums*/) const {}
+  virtual void history_from_sums(const double* /*sums*/, std::vector<double>& /*out*/) const {}
+  //! The columns' values of the points [begin, end) of one process.
+  void history_values(const Particles<D>& points, long begin, long end,
+                      std::vector<double>& out) const {
+    std::vector<double> sums;
+    history_sums(points, begin, end, sums);
+    history_from_sums(sums.data(), out);
+  }
   //! Quantities computed for snapshots from the model's columns, and their values for
   //! points [begin, end) written to `out` (components per point, point `begin` first).
   virtual std::vector<SnapshotField> snapshot_fields() const { return {}; }

@@ -1,0 +1,59 @@
+#pragma once
+//! A distributed run (DESIGN.md, "Distributed runs"): every rank builds the whole case, then
+//! keeps the points of its patch and the grid window they reach, and a hook completes the
+//! node sums after each scatter (halo_sums.hpp) and moves points that left the patch to its
+//! owner at the end of each step (migration.hpp). Reductions of whole-system quantities go
+//! through the communicator in rank order, so np = 1, 2, 3 … agree to round-off.
+
+#include <memory>
+#include <vector>
+
+#include "pellicle/dist/communicator.hpp"
+#include "pellicle/dist/decomposition.hpp"
+#include "pellicle/dist/halo_sums.hpp"
+#include "pellicle/mpm/simulation.hpp"
+
+namespace pellicle {
+
+//! Traffic and balance of a distributed run, for reports and scaling measurements.
+struct DistributedStatistics {
+  long halo_doubles_per_step = 0;  //!< doubles this rank sent to complete node sums, last step
+  long migrated = 0;               //!< points this rank sent away over the run
+  double imbalance = 0.0;          //!< of the patches (decomposition.hpp)
+};
+
+template <int D>
+class PatchRun final : public StepHook<D> {
+ public:
+  PatchRun(const Communicator& world, std::vector<Patch<D>> patches, const Grid<D>& window);
+
+  void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
+  void end_of_step(Simulation<D>& simulation) override;
+
+  const std::vector<Patch<D>>& patches() const { return patches_; }
+  const DistributedStatistics& statistics() const { return statistics_; }
+  //! The rank whose patch holds the cell of x (cells clamped to the grid).
+  int owner(const Grid<D>& grid, const Vec<D>& x) const;
+
+ private:
+  const Communicator& world_;
+  std::vector<Patch<D>> patches_;
+  HaloSums<D> halo_;
+  std::vector<int> destination_;
+  long halo_this_step_ = 0;
+  DistributedStatistics statistics_;
+};
+
+//! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its
+//! patch's points and grid window and gets the PatchRun hook. Throws SetupError, naming the
+//! feature, for what distributed runs do not take yet (membranes, contact, rigid bodies,
+//! bodies inside membranes, fluids with cell densities). Returns the hook.
+template <int D>
+const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world);
+
+extern template class PatchRun<2>;
+extern template class PatchRun<3>;
+extern template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&);
+extern template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&);
+
+}  // namespace pellicle

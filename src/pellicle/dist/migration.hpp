@@ -1,0 +1,29 @@
+#pragma once
+//! Point migration of a distributed run (DESIGN.md, "Distributed runs"): at the end of a step
+//! the points whose cell has left the rank's patch go to the rank that owns that cell, with
+//! every column, the declared ones included. Each body stays contiguous: its kept points in
+//! their order, then the arrivals in the senders' rank order.
+
+#include <vector>
+
+#include "pellicle/dist/communicator.hpp"
+#include "pellicle/mpm/particles.hpp"
+
+namespace pellicle {
+
+//! Send every point p with destination[p] ≠ this rank there, and take in the points the
+//! other ranks send here. Collective. Returns the number of points this rank sent.
+template <int D>
+long migrate_points(const Communicator& world, const std::vector<int>& destination,
+                    Particles<D>& points);
+
+//! Keep only the points with keep[p] true (a rank's share of a case every rank built whole).
+template <int D>
+void keep_points(const std::vector<char>& keep, Particles<D>& points);
+
+extern template void keep_points<2>(const std::vector<char>&, Particles<2>&);
+extern template void keep_points<3>(const std::vector<char>&, Particles<3>&);
+extern template long migrate_points<2>(const Communicator&, const std::vector<int>&, Particles<2>&);
+extern template long migrate_points<3>(const Communicator&, const std::vector<int>&, Particles<3>&);
+
+}  // namespace pellicle
