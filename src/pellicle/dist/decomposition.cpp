@@ -56,14 +56,20 @@ void bisect(const CellCounts<D>& counts, const IVec<D>& lower, const IVec<D>& up
     const double total = std::accumulate(sums.begin(), sums.end(), 0.0);
     const double target = total * low_ranks / ranks;
     double below = 0.0, best_error = std::numeric_limits<double>::infinity();
-    int best = min_cells;
+    // The best cuts' first run of neighbouring planes (empty planes between two bodies):
+    // the middle one leaves the points farthest from the cut, so fewest cross it.
+    int best_first = min_cells, best_last = min_cells;
     for (int c = 0; c < extent - min_cells; ++c) {
       below += sums[c];
       const int cut = c + 1;  // planes [0, cut) go to the lower side
       if (cut < min_cells) continue;
       const double error = std::abs(below - target);
-      if (error < best_error) best_error = error, best = cut;
+      if (error < best_error)
+        best_error = error, best_first = best_last = cut;
+      else if (error == best_error && cut == best_last + 1)
+        best_last = cut;
     }
+    const int best = (best_first + best_last) / 2;
     IVec<D> middle_upper = upper, middle_lower = lower;
     middle_upper[axis] = lower[axis] + best;
     middle_lower[axis] = lower[axis] + best;

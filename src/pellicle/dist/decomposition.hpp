@@ -30,7 +30,8 @@ struct Patch {
 };
 
 //! Split the cells into `ranks` patches: a box of r ranks is cut across its longest axis (in
-//! cells) at the plane whose share of the box's points is closest to ⌊r/2⌋/r, and each side
+//! cells) at the plane whose share of the box's points is closest to ⌊r/2⌋/r (the middle one
+//! of neighbouring planes that share it equally, as in a gap between bodies), and each side
 //! gets ⌊r/2⌋ and ⌈r/2⌉ ranks, until every box has one rank. Every patch is at least
 //! `min_cells` cells wide along every axis it was cut across, so a halo as wide as the kernel
 //! only ever reaches adjacent patches. With no points at all, cells weigh equally. Patches

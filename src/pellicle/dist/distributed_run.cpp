@@ -1,6 +1,9 @@
 #include "pellicle/dist/distributed_run.hpp"
 
+#include <omp.h>
+
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "pellicle/core/error.hpp"
@@ -57,16 +60,25 @@ PatchRun<D>::PatchRun(const Communicator& world, std::vector<Patch<D>> patches,
       patches_(std::move(patches)),
       halo_(world, halo_plan(patches_, window.cells(), Grid<D>::kGhost, world.rank()), window) {
   statistics_.imbalance = imbalance(patches_);
+  constexpr double kOpen = std::numeric_limits<double>::infinity();
+  for (const auto& p : patches_) {
+    Box box;
+    for (int d = 0; d < D; ++d) {
+      box.lower[d] = p.lower[d] == 0 ? -kOpen : window.lower()[d] + p.lower[d] * window.cell();
+      box.upper[d] =
+          p.upper[d] == window.cells()[d] ? kOpen : window.lower()[d] + p.upper[d] * window.cell();
+    }
+    boxes_.push_back(box);
+  }
 }
 
 template <int D>
-int PatchRun<D>::owner(const Grid<D>& grid, const Vec<D>& x) const {
-  const IVec<D> c = cell_of(grid, x);
+int PatchRun<D>::owner(const Vec<D>& x) const {
   const int me = world_.rank();
-  if (patches_[me].contains(c)) return me;
-  for (const auto& p : patches_)
-    if (p.contains(c)) return p.rank;
-  return me;  // unreachable: the patches tile the grid
+  if (boxes_[me].contains(x)) return me;
+  for (std::size_t r = 0; r < boxes_.size(); ++r)
+    if (boxes_[r].contains(x)) return static_cast<int>(r);
+  return me;  // not finite: the step's checks stop the run
 }
 
 template <int D>
@@ -82,11 +94,20 @@ template <int D>
 void PatchRun<D>::end_of_step(Simulation<D>& simulation) {
   auto& points = simulation.points();
   const long n = points.size();
-  destination_.resize(n);
-  const Grid<D>& grid = simulation.grid();
-#pragma omp parallel for schedule(static)
-  for (long p = 0; p < n; ++p) destination_[p] = owner(grid, points.position[p]);
-  const long sent = migrate_points(world_, destination_, points);
+  const Box& mine = boxes_[world_.rank()];
+  // The points that left the patch, in ascending order (each thread's share in turn).
+  leaving_.resize(omp_get_max_threads());
+#pragma omp parallel
+  {
+    auto& leaving = leaving_[omp_get_thread_num()];
+    leaving.clear();
+#pragma omp for schedule(static)
+    for (long p = 0; p < n; ++p)
+      if (!mine.contains(points.position[p])) leaving.push_back({p, owner(points.position[p])});
+  }
+  for (std::size_t t = 1; t < leaving_.size(); ++t)
+    leaving_[0].insert(leaving_[0].end(), leaving_[t].begin(), leaving_[t].end());
+  const long sent = migrate_points(world_, leaving_[0], points);
   statistics_.migrated += sent;
   if (sent > 0 || points.size() != n) simulation.points_changed();
   statistics_.halo_doubles_per_step = halo_this_step_;
@@ -122,7 +143,7 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window);
   std::vector<char> keep(points.size());
   for (long p = 0; p < points.size(); ++p)
-    keep[p] = hook->owner(grid, points.position[p]) == world.rank();
+    keep[p] = hook->owner(points.position[p]) == world.rank();
   keep_points(keep, points);
   simulation.use_grid_window(window);
   simulation.points_changed();

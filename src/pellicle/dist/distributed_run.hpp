@@ -11,6 +11,7 @@
 #include "pellicle/dist/communicator.hpp"
 #include "pellicle/dist/decomposition.hpp"
 #include "pellicle/dist/halo_sums.hpp"
+#include "pellicle/dist/migration.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
@@ -25,6 +26,7 @@ struct DistributedStatistics {
 template <int D>
 class PatchRun final : public StepHook<D> {
  public:
+  //! `window`: this rank's grid (Grid::window), in the whole grid's index space.
   PatchRun(const Communicator& world, std::vector<Patch<D>> patches, const Grid<D>& window);
 
   void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
@@ -32,14 +34,22 @@ class PatchRun final : public StepHook<D> {
 
   const std::vector<Patch<D>>& patches() const { return patches_; }
   const DistributedStatistics& statistics() const { return statistics_; }
-  //! The rank whose patch holds the cell of x (cells clamped to the grid).
-  int owner(const Grid<D>& grid, const Vec<D>& x) const;
+  //! The rank whose patch holds x (a patch at the domain's side reaches past it).
+  int owner(const Vec<D>& x) const;
 
  private:
+  //! The patches as boxes in space, open where they reach the domain's side.
+  struct Box {
+    Vec<D> lower, upper;
+    bool contains(const Vec<D>& x) const {
+      return (x.array() >= lower.array()).all() && (x.array() < upper.array()).all();
+    }
+  };
   const Communicator& world_;
   std::vector<Patch<D>> patches_;
+  std::vector<Box> boxes_;
   HaloSums<D> halo_;
-  std::vector<int> destination_;
+  std::vector<std::vector<LeavingPoint>> leaving_;  //!< per thread
   long halo_this_step_ = 0;
   DistributedStatistics statistics_;
 };

@@ -1,5 +1,6 @@
 #include "pellicle/dist/migration.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace pellicle {
@@ -83,48 +84,95 @@ void keep_points(const std::vector<char>& keep, Particles<D>& points) {
 }
 
 template <int D>
-long migrate_points(const Communicator& world, const std::vector<int>& destination,
+long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
                     Particles<D>& points) {
-  const int me = world.rank();
   const long n = points.size();
   // A record per leaving point: its body, then every array's values.
   auto arrays = point_arrays(points);
   int record = 1;
   for (const auto& a : arrays) record += a.first;
   std::vector<std::vector<double>> to_rank(world.size()), from_rank;
-  long sent = 0;
-  for (long p = 0; p < n; ++p) {
-    if (destination[p] == me) continue;
-    auto& out = to_rank[destination[p]];
+  for (const auto& [p, rank] : leaving) {
+    auto& out = to_rank[rank];
     out.push_back(points.body[p]);
     for (const auto& [c, data] : arrays) out.insert(out.end(), data + p * c, data + (p + 1) * c);
-    ++sent;
   }
   world.all_to_all(to_rank, from_rank);
   long received = 0;
   for (const auto& in : from_rank) received += static_cast<long>(in.size()) / record;
-  if (sent == 0 && received == 0) return 0;
+  if (leaving.empty() && received == 0) return 0;
 
-  // The new order: per body, its kept points, then its arrivals by sender rank.
-  std::vector<PointSource> order;
-  order.reserve(n - sent + received);
-  std::vector<long> first(points.bodies.size() + 1, 0);
-  for (std::size_t b = 0; b < points.bodies.size(); ++b) {
-    first[b] = static_cast<long>(order.size());
-    for (long p = points.bodies[b].begin; p < points.bodies[b].end; ++p)
-      if (destination[p] == me) order.push_back({p, nullptr});
-    for (const auto& in : from_rank)
-      for (std::size_t r = 0; r < in.size(); r += record)
-        if (static_cast<std::size_t>(in[r]) == b) order.push_back({-1, in.data() + r + 1});
+  // The layout changes by a few points, so points are moved, not the arrays rebuilt:
+  // 1. in each body, the last points fill the places of the leaving ones;
+  // 2. each body's kept block shifts to its new start by moving only the part of it that
+  //    does not overlap its new place (bodies moving down first, in order, then those
+  //    moving up, in reverse order, so no block lands on one not yet moved);
+  // 3. the arrivals follow each body's kept block, by sender rank.
+  const int bodies = static_cast<int>(points.bodies.size());
+  std::vector<long> kept(bodies);
+  struct Move {
+    long from, to, count;
+  };
+  std::vector<Move> moves;
+  std::size_t next = leaving.size();
+  for (int b = bodies - 1; b >= 0; --b) {  // leaving is in ascending point order
+    const long begin = points.bodies[b].begin;
+    long end = points.bodies[b].end;
+    while (next > 0 && leaving[next - 1].point >= begin) {
+      const long p = leaving[--next].point;
+      if (p != end - 1) moves.push_back({end - 1, p, 1});
+      --end;
+    }
+    kept[b] = end - begin;
   }
-  first.back() = static_cast<long>(order.size());
-  rebuild(order, first, points);
-  return sent;
+  std::vector<std::vector<const double*>> arriving(bodies);
+  for (const auto& in : from_rank)
+    for (std::size_t r = 0; r < in.size(); r += record)
+      arriving[static_cast<int>(in[r])].push_back(in.data() + r + 1);
+  std::vector<long> start(bodies + 1, 0);
+  for (int b = 0; b < bodies; ++b)
+    start[b + 1] = start[b] + kept[b] + static_cast<long>(arriving[b].size());
+  auto shift = [&](int b) {
+    const long begin = points.bodies[b].begin, by = start[b] - begin;
+    if (by > 0) {
+      const long k = std::min(by, kept[b]);
+      moves.push_back({begin, begin + by + kept[b] - k, k});
+    } else if (by < 0) {
+      const long k = std::min(-by, kept[b]);
+      moves.push_back({begin + kept[b] - k, start[b], k});
+    }
+  };
+  for (int b = 0; b < bodies; ++b)
+    if (start[b] <= points.bodies[b].begin) shift(b);
+  for (int b = bodies - 1; b >= 0; --b)
+    if (start[b] > points.bodies[b].begin) shift(b);
+
+  const long m = start[bodies];
+  if (m > n) resize_points(points, m);
+  int offset = 0;
+  for (const auto& [c, data] : point_arrays(points)) {
+    for (const Move& move : moves)
+      std::memcpy(data + move.to * c, data + move.from * c, sizeof(double) * c * move.count);
+    for (int b = 0; b < bodies; ++b)
+      for (std::size_t a = 0; a < arriving[b].size(); ++a)
+        std::memcpy(data + (start[b] + kept[b] + static_cast<long>(a)) * c, arriving[b][a] + offset,
+                    sizeof(double) * c);
+    offset += c;
+  }
+  if (m < n) resize_points(points, m);
+  for (int b = 0; b < bodies; ++b) {
+    points.bodies[b].begin = start[b];
+    points.bodies[b].end = start[b + 1];
+    std::fill(points.body.begin() + start[b], points.body.begin() + start[b + 1], b);
+  }
+  return static_cast<long>(leaving.size());
 }
 
 template void keep_points<2>(const std::vector<char>&, Particles<2>&);
 template void keep_points<3>(const std::vector<char>&, Particles<3>&);
-template long migrate_points<2>(const Communicator&, const std::vector<int>&, Particles<2>&);
-template long migrate_points<3>(const Communicator&, const std::vector<int>&, Particles<3>&);
+template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
+                                Particles<2>&);
+template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,
+                                Particles<3>&);
 
 }  // namespace pellicle

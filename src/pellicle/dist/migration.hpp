@@ -1,8 +1,9 @@
 #pragma once
 //! Point migration of a distributed run (DESIGN.md, "Distributed runs"): at the end of a step
 //! the points whose cell has left the rank's patch go to the rank that owns that cell, with
-//! every column, the declared ones included. Each body stays contiguous: its kept points in
-//! their order, then the arrivals in the senders' rank order.
+//! every column, the declared ones included. Each body stays contiguous: its kept points (a
+//! few of them moved to fill the leavers' places), then the arrivals in the senders' rank
+//! order.
 
 #include <vector>
 
@@ -11,10 +12,16 @@
 
 namespace pellicle {
 
-//! Send every point p with destination[p] ≠ this rank there, and take in the points the
-//! other ranks send here. Collective. Returns the number of points this rank sent.
+//! A point that leaves this rank, and the rank it goes to.
+struct LeavingPoint {
+  long point;
+  int rank;
+};
+
+//! Send the `leaving` points (in ascending point order) to their ranks, and take in the points
+//! the other ranks send here. Collective. Returns the number of points this rank sent.
 template <int D>
-long migrate_points(const Communicator& world, const std::vector<int>& destination,
+long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
                     Particles<D>& points);
 
 //! Keep only the points with keep[p] true (a rank's share of a case every rank built whole).
@@ -23,7 +30,9 @@ void keep_points(const std::vector<char>& keep, Particles<D>& points);
 
 extern template void keep_points<2>(const std::vector<char>&, Particles<2>&);
 extern template void keep_points<3>(const std::vector<char>&, Particles<3>&);
-extern template long migrate_points<2>(const Communicator&, const std::vector<int>&, Particles<2>&);
-extern template long migrate_points<3>(const Communicator&, const std::vector<int>&, Particles<3>&);
+extern template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
+                                       Particles<2>&);
+extern template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,
+                                       Particles<3>&);
 
 }  // namespace pellicle
