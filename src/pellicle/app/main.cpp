@@ -71,7 +71,9 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--overwrite", run.overwrite,
                     "Replace another run's results in the output directory (only Pellicle's "
                     "files are removed)");
-  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: all cores)")
+  run_cmd
+      ->add_option("--threads", run.threads,
+                   "OpenMP threads (default: all cores, shared out among mpirun's ranks)")
       ->check(thread_count());
   run_cmd->add_option("--restart", run.restart,
                       "Continue from a checkpoint (the case may change restart-safe keys)");

@@ -2,7 +2,9 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 
@@ -275,8 +277,28 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   }
 }
 
+//! OpenMP threads of each rank: --threads, else OMP_NUM_THREADS, else the machine's cores
+//! shared out among the ranks on it (all cores for every rank would make each rank's threads
+//! wait for cores at every loop's end, many times slower).
+void set_threads(const RunOptions& o) {
+  if (o.threads > 0) {
+    omp_set_num_threads(o.threads);
+    return;
+  }
+#ifdef PELLICLE_WITH_MPI
+  if (o.world && !std::getenv("OMP_NUM_THREADS"))
+    omp_set_num_threads(std::max(1, omp_get_num_procs() / o.world->ranks_on_this_machine()));
+  if (o.world && o.world->rank() == 0 &&
+      omp_get_max_threads() * o.world->ranks_on_this_machine() > omp_get_num_procs())
+    std::fprintf(stderr,
+                 "pellicle: warning: %d ranks × %d threads on %d processors: the threads will "
+                 "wait for each other; use --threads or OMP_NUM_THREADS\n",
+                 o.world->ranks_on_this_machine(), omp_get_max_threads(), omp_get_num_procs());
+#endif
+}
+
 int run_or_check(const RunOptions& o, bool check_only) {
-  if (o.threads > 0) omp_set_num_threads(o.threads);
+  set_threads(o);
   try {
     const auto source = load_case_source(o.case_path, o.overrides);
     if (is_surface_case(*source)) {

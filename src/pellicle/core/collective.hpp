@@ -17,6 +17,7 @@ class Collective {
   virtual void sum_in_rank_order(std::vector<double>& values) const = 0;
   virtual void sum(std::vector<long>& values) const = 0;
   virtual double max(double value) const = 0;
+  virtual void max(std::vector<double>& values) const = 0;  //!< element-wise
   virtual double min(double value) const = 0;
 };
 

@@ -10,6 +10,10 @@ Communicator::Communicator(int& argc, char**& argv) {
   MPI_Init(&argc, &argv);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm machine;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &machine);
+  MPI_Comm_size(machine, &local_size_);
+  MPI_Comm_free(&machine);
 }
 
 Communicator::~Communicator() {
@@ -29,6 +33,11 @@ void Communicator::sum_in_rank_order(std::vector<double>& values) const {
 
 void Communicator::sum(std::vector<long>& values) const {
   MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_LONG, MPI_SUM,
+                MPI_COMM_WORLD);
+}
+
+void Communicator::max(std::vector<double>& values) const {
+  MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX,
                 MPI_COMM_WORLD);
 }
 
@@ -58,24 +67,18 @@ void Communicator::exchange(const std::vector<Message>& outgoing,
 
 void Communicator::all_to_all(const std::vector<std::vector<double>>& to_rank,
                               std::vector<std::vector<double>>& from_rank) const {
-  std::vector<int> send_counts(size_), receive_counts(size_), send_offsets(size_),
-      receive_offsets(size_);
-  std::vector<double> send;
-  for (int r = 0; r < size_; ++r) {
-    send_counts[r] = static_cast<int>(to_rank[r].size());
-    send_offsets[r] = static_cast<int>(send.size());
-    send.insert(send.end(), to_rank[r].begin(), to_rank[r].end());
-  }
+  std::vector<int> send_counts(size_), receive_counts(size_);
+  for (int r = 0; r < size_; ++r) send_counts[r] = static_cast<int>(to_rank[r].size());
   MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  int total = 0;
-  for (int r = 0; r < size_; ++r) receive_offsets[r] = total, total += receive_counts[r];
-  std::vector<double> received(total);
-  MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE, received.data(),
-                receive_counts.data(), receive_offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  // Then only the ranks that have something to say talk (mostly none, or a neighbour).
+  std::vector<Message> outgoing, incoming;
+  for (int r = 0; r < size_; ++r) {
+    if (send_counts[r] > 0) outgoing.push_back({r, to_rank[r]});
+    if (receive_counts[r] > 0) incoming.push_back({r, std::vector<double>(receive_counts[r])});
+  }
+  exchange(outgoing, incoming);
   from_rank.assign(size_, {});
-  for (int r = 0; r < size_; ++r)
-    from_rank[r].assign(received.begin() + receive_offsets[r],
-                        received.begin() + receive_offsets[r] + receive_counts[r]);
+  for (auto& in : incoming) from_rank[in.rank] = std::move(in.values);
 }
 
 void Communicator::abort(int exit_code) const {

@@ -19,10 +19,13 @@ class Communicator final : public Collective {
 
   int rank() const override { return rank_; }
   int size() const override { return size_; }
+  //! Ranks of the run on this machine (they share its cores).
+  int ranks_on_this_machine() const { return local_size_; }
 
   void sum_in_rank_order(std::vector<double>& values) const override;
   void sum(std::vector<long>& values) const override;
   double max(double value) const override;
+  void max(std::vector<double>& values) const override;
   double min(double value) const override;
 
   //! Point-to-point: send each outgoing buffer to its rank and receive each incoming buffer
@@ -40,7 +43,7 @@ class Communicator final : public Collective {
   [[noreturn]] void abort(int exit_code) const;
 
  private:
-  int rank_ = 0, size_ = 1;
+  int rank_ = 0, size_ = 1, local_size_ = 1;
 };
 
 }  // namespace pellicle

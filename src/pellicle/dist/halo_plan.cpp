@@ -7,16 +7,6 @@
 namespace pellicle {
 
 template <int D>
-NodeBox<D> owned_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost) {
-  NodeBox<D> box;
-  for (int d = 0; d < D; ++d) {
-    box.first[d] = p.lower[d] == 0 ? -ghost : p.lower[d];
-    box.last[d] = p.upper[d] == cells[d] ? cells[d] + ghost : p.upper[d] - 1;
-  }
-  return box;
-}
-
-template <int D>
 NodeBox<D> touched_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost) {
   NodeBox<D> box;
   for (int d = 0; d < D; ++d) {
@@ -52,35 +42,27 @@ NodeBox<D> intersection(const NodeBox<D>& a, const NodeBox<D>& b) {
 }  // namespace
 
 template <int D>
-std::vector<HaloExchange> halo_plan(const std::vector<Patch<D>>& patches, const IVec<D>& cells,
-                                    int ghost, int rank) {
+std::vector<NodesSharedWith> halo_plan(const std::vector<Patch<D>>& patches, const IVec<D>& cells,
+                                       int ghost, int rank) {
   if (rank < 0 || rank >= static_cast<int>(patches.size()))
     throw std::invalid_argument("no patch for rank " + std::to_string(rank));
-  const NodeBox<D> mine = owned_nodes(patches[rank], cells, ghost);
-  const NodeBox<D> reach = touched_nodes(patches[rank], cells, ghost);
-  std::vector<HaloExchange> plan;
+  const NodeBox<D> mine = touched_nodes(patches[rank], cells, ghost);
+  std::vector<NodesSharedWith> plan;
   for (int s = 0; s < static_cast<int>(patches.size()); ++s) {
     if (s == rank) continue;
-    HaloExchange e;
-    e.rank = s;
-    e.to_owner =
-        node_indices(intersection(reach, owned_nodes(patches[s], cells, ghost)), cells, ghost);
-    e.from_halo =
-        node_indices(intersection(touched_nodes(patches[s], cells, ghost), mine), cells, ghost);
-    if (!e.to_owner.empty() || !e.from_halo.empty()) plan.push_back(std::move(e));
+    const NodeBox<D> both = intersection(mine, touched_nodes(patches[s], cells, ghost));
+    if (!both.empty()) plan.push_back({s, node_indices(both, cells, ghost)});
   }
   return plan;
 }
 
-template NodeBox<2> owned_nodes<2>(const Patch<2>&, const IVec<2>&, int);
-template NodeBox<3> owned_nodes<3>(const Patch<3>&, const IVec<3>&, int);
+template std::vector<NodesSharedWith> halo_plan<2>(const std::vector<Patch<2>>&, const IVec<2>&,
+                                                   int, int);
+template std::vector<NodesSharedWith> halo_plan<3>(const std::vector<Patch<3>>&, const IVec<3>&,
+                                                   int, int);
 template NodeBox<2> touched_nodes<2>(const Patch<2>&, const IVec<2>&, int);
 template NodeBox<3> touched_nodes<3>(const Patch<3>&, const IVec<3>&, int);
 template std::vector<long> node_indices<2>(const NodeBox<2>&, const IVec<2>&, int);
 template std::vector<long> node_indices<3>(const NodeBox<3>&, const IVec<3>&, int);
-template std::vector<HaloExchange> halo_plan<2>(const std::vector<Patch<2>>&, const IVec<2>&, int,
-                                                int);
-template std::vector<HaloExchange> halo_plan<3>(const std::vector<Patch<3>>&, const IVec<3>&, int,
-                                                int);
 
 }  // namespace pellicle

@@ -1,5 +1,7 @@
 #include "pellicle/dist/halo_sums.hpp"
 
+#include <algorithm>
+
 namespace pellicle {
 
 namespace {
@@ -40,26 +42,27 @@ struct NodeArrays {
       for (const auto& [data, c] : arrays)
         for (int i = 0; i < c; ++i) data[n * c + i] += *v++;
   }
-  void assign(const std::vector<long>& nodes, const std::vector<double>& in) const {
-    const double* v = in.data();
+  void clear(const std::vector<long>& nodes) const {
     for (long n : nodes)
       for (const auto& [data, c] : arrays)
-        for (int i = 0; i < c; ++i) data[n * c + i] = *v++;
+        for (int i = 0; i < c; ++i) data[n * c + i] = 0.0;
   }
 };
 
 }  // namespace
 
 template <int D>
-HaloSums<D>::HaloSums(const Communicator& world, const std::vector<HaloExchange>& plan,
+HaloSums<D>::HaloSums(const Communicator& world, const std::vector<NodesSharedWith>& plan,
                       const Grid<D>& window)
-    : world_(world) {
+    : world_(world), rank_(world.rank()) {
   for (const auto& e : plan) {
-    Neighbour n{e.rank, {}, {}};
-    for (long g : e.to_owner) n.halo.push_back(storage_index(window, g));
-    for (long g : e.from_halo) n.owned.push_back(storage_index(window, g));
+    Neighbour n{e.rank, {}};
+    for (long g : e.nodes) n.nodes.push_back(storage_index(window, g));
+    shared_.insert(shared_.end(), n.nodes.begin(), n.nodes.end());
     neighbours_.push_back(std::move(n));
   }
+  std::sort(shared_.begin(), shared_.end());
+  shared_.erase(std::unique(shared_.begin(), shared_.end()), shared_.end());
   outgoing_.resize(neighbours_.size());
   incoming_.resize(neighbours_.size());
 }
@@ -68,25 +71,22 @@ template <int D>
 void HaloSums<D>::complete(Grid<D>& grid, ScatteredFields fields) {
   const NodeArrays<D> arrays(grid, fields);
   last_sent_ = 0;
-  // Pass 1: halo shares to their owners, added in the neighbours' rank order (the plan's).
   for (std::size_t k = 0; k < neighbours_.size(); ++k) {
     outgoing_[k].rank = incoming_[k].rank = neighbours_[k].rank;
-    arrays.pack(neighbours_[k].halo, outgoing_[k].values);
-    incoming_[k].values.resize(neighbours_[k].owned.size() * arrays.per_node);
+    arrays.pack(neighbours_[k].nodes, outgoing_[k].values);
+    incoming_[k].values.resize(outgoing_[k].values.size());
     last_sent_ += static_cast<long>(outgoing_[k].values.size());
   }
   world_.exchange(outgoing_, incoming_);
-  for (std::size_t k = 0; k < neighbours_.size(); ++k)
-    arrays.add(neighbours_[k].owned, incoming_[k].values);
-  // Pass 2: the complete sums back to the halos that hold them.
-  for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-    arrays.pack(neighbours_[k].owned, outgoing_[k].values);
-    incoming_[k].values.resize(neighbours_[k].halo.size() * arrays.per_node);
-    last_sent_ += static_cast<long>(outgoing_[k].values.size());
-  }
-  world_.exchange(outgoing_, incoming_);
-  for (std::size_t k = 0; k < neighbours_.size(); ++k)
-    arrays.assign(neighbours_[k].halo, incoming_[k].values);
+  // Every shared node's sum in rank order over the ranks that hold it (0 + a = a exactly):
+  // the lower ranks' shares, this rank's, the higher ranks'.
+  arrays.pack(shared_, own_);
+  arrays.clear(shared_);
+  std::size_t k = 0;
+  for (; k < neighbours_.size() && neighbours_[k].rank < rank_; ++k)
+    arrays.add(neighbours_[k].nodes, incoming_[k].values);
+  arrays.add(shared_, own_);
+  for (; k < neighbours_.size(); ++k) arrays.add(neighbours_[k].nodes, incoming_[k].values);
 }
 
 template class HaloSums<2>;

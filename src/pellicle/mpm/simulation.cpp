@@ -141,7 +141,12 @@ void Simulation<D>::step() {
 
 template <int D>
 double Simulation<D>::time_step() {
-  const double wave = max_wave_speed();
+  double wave = local_max_wave_speed();
+  if (collective_) {  // one reduction for both speeds
+    std::vector<double> speeds{wave, max_speed_};
+    collective_->max(speeds);
+    wave = speeds[0], max_speed_ = speeds[1];
+  }
   const double dt = time_step(wave + max_speed_);
   // Thesis §8.4 (eqs 8.39–8.41): the Lagrangian step is stable up to Δt = h/c with points at
   // cell sides and 2h/c at cell centres, so the stability number is c Δt / h; the point speed
@@ -211,7 +216,6 @@ void Simulation<D>::to_points(double dt) {
     max_speed_ = std::max(max_speed_, transfer_->to_points(fields_.field(k), dt, points_, failure,
                                                            fields_.points(k)));
   if (failure.point >= 0) fail(failure.point, failure.what);
-  max_speed_ = global_max(max_speed_);
   for (auto& hook : hooks_) hook->after_to_points(*this);
 }
 
@@ -383,17 +387,22 @@ double Simulation<D>::time_step(double signal_speed) const {
 }
 
 template <int D>
-double Simulation<D>::max_wave_speed() const {
+double Simulation<D>::local_max_wave_speed() const {
   double wave = 0.0;
   for (const auto& body : points_.bodies)
     wave = std::max(wave, materials_[body.material]->max_signal_speed(points_, body.begin, body.end,
                                                                       grid().cell()));
-  return global_max(wave);
+  return wave;
+}
+
+template <int D>
+double Simulation<D>::max_wave_speed() const {
+  return global_max(local_max_wave_speed());
 }
 
 template <int D>
 double Simulation<D>::max_signal_speed() const {
-  return max_wave_speed() + max_speed_;
+  return max_wave_speed() + global_max(max_speed_);
 }
 
 template <int D>

@@ -104,7 +104,8 @@ class Simulation final : private Stages {
   long step_count() const { return step_; }
   long point_count() const { return points_.size(); }
   double last_dt() const { return last_dt_; }
-  //! Largest point speed after the last step (part of the next step's CFL signal speed).
+  //! Largest point speed after the last step (part of the next step's CFL signal speed); in
+  //! a distributed run, of this rank's points.
   double max_point_speed() const { return max_speed_; }
   //! Wave Courant number Δt max(c)/h of the last step: the stability number of the
   //! Lagrangian step (thesis §8.4), which the point speeds do not enter.
@@ -160,6 +161,7 @@ class Simulation final : private Stages {
   [[noreturn]] void fail(long point, const std::string& what) const;
   //! Hooks' after_scatter, then the centre-of-mass sums of per-body fields.
   void scattered(ScatteredFields fields);
+  double local_max_wave_speed() const;
   double global_max(double value) const { return collective_ ? collective_->max(value) : value; }
 
   SimulationSettings settings_;
