@@ -12,21 +12,22 @@ namespace pellicle {
 namespace {
 
 template <int D>
-void check_plan(const IVec<D>& cells, int ranks, int ghost) {
+void check_plan(const IVec<D>& cells, int ranks, int ghost, int reach) {
   long cell_count = 1, node_count = 1;
   for (int d = 0; d < D; ++d) cell_count *= cells[d], node_count *= cells[d] + 1 + 2 * ghost;
   CellCounts<D> counts{cells, std::vector<long>(cell_count, 1)};
   const auto patches = bisect_patches(counts, ranks, ghost);
-  // Which ranks' windows hold each node; every node of the grid is in at least one.
+  // Which ranks' windows hold each node; every node the points can reach (all but the ghost
+  // layers beyond `reach`) is in at least one.
   std::vector<std::vector<int>> holders(node_count);
   for (const auto& p : patches)
-    for (long n : node_indices(touched_nodes(p, cells, ghost), cells, ghost))
+    for (long n : node_indices(touched_nodes(p, cells, ghost, reach), cells, ghost))
       holders[n].push_back(p.rank);
-  EXPECT_TRUE(std::none_of(holders.begin(), holders.end(),
-                           [](const std::vector<int>& h) { return h.empty(); }));
+  const NodeBox<D> reachable{IVec<D>::Constant(-reach), cells + IVec<D>::Constant(reach)};
+  for (long n : node_indices(reachable, cells, ghost)) EXPECT_FALSE(holders[n].empty());
 
   std::vector<std::vector<NodesSharedWith>> plans;
-  for (int r = 0; r < ranks; ++r) plans.push_back(halo_plan(patches, cells, ghost, r));
+  for (int r = 0; r < ranks; ++r) plans.push_back(halo_plan(patches, cells, ghost, reach, r));
   for (int r = 0; r < ranks; ++r) {
     // Each node of r's window is listed once for each other rank that holds it.
     std::vector<std::set<int>> listed(node_count);
@@ -43,7 +44,7 @@ void check_plan(const IVec<D>& cells, int ranks, int ghost) {
       ASSERT_NE(back, other.end());
       EXPECT_EQ(e.nodes, back->nodes);
     }
-    for (long n : node_indices(touched_nodes(patches[r], cells, ghost), cells, ghost)) {
+    for (long n : node_indices(touched_nodes(patches[r], cells, ghost, reach), cells, ghost)) {
       std::set<int> others(holders[n].begin(), holders[n].end());
       others.erase(r);
       EXPECT_EQ(listed[n], others) << "rank " << r << " node " << n;
@@ -54,33 +55,37 @@ void check_plan(const IVec<D>& cells, int ranks, int ghost) {
 TEST(HaloPlan, OneRankExchangesNothing) {
   const IVec<2> cells(16, 12);
   CellCounts<2> counts{cells, std::vector<long>(16 * 12, 1)};
-  EXPECT_TRUE(halo_plan(bisect_patches(counts, 1, 2), cells, 2, 0).empty());
+  EXPECT_TRUE(halo_plan(bisect_patches(counts, 1, 2), cells, 2, 2, 0).empty());
 }
 
 TEST(HaloPlan, ListsAgreeBetweenRanksIn2D) {
-  check_plan<2>(IVec<2>(24, 16), 2, 2);
-  check_plan<2>(IVec<2>(24, 16), 3, 2);
-  check_plan<2>(IVec<2>(30, 30), 5, 2);
+  check_plan<2>(IVec<2>(24, 16), 2, 2, 2);
+  check_plan<2>(IVec<2>(24, 16), 3, 2, 2);
+  check_plan<2>(IVec<2>(30, 30), 5, 2, 2);
+  check_plan<2>(IVec<2>(30, 30), 5, 2, 1);
 }
 
 TEST(HaloPlan, ListsAgreeBetweenRanksIn3D) {
-  check_plan<3>(IVec<3>(12, 10, 8), 3, 2);
-  check_plan<3>(IVec<3>(16, 16, 16), 8, 2);
+  check_plan<3>(IVec<3>(12, 10, 8), 3, 2, 2);
+  check_plan<3>(IVec<3>(16, 16, 16), 8, 2, 1);
 }
 
 TEST(HaloPlan, TwoStripsShareFiveColumnsOfNodes) {
-  // 20 × 10 cells cut at x = 10. Rank 0's points reach node columns −2 … 12, rank 1's
-  // 8 … 22: they share columns 8–12, each 15 nodes high (10 + 1 cells' nodes and 2 × 2
-  // ghosts).
+  // 20 × 10 cells cut at x = 10. Reaching two layers, rank 0's points reach node columns
+  // −2 … 12, rank 1's 8 … 22: they share columns 8–12, each 15 nodes high (10 + 1 cells'
+  // nodes and 2 × 2 ghosts).
   const IVec<2> cells(20, 10);
   CellCounts<2> counts{cells, std::vector<long>(200, 1)};
   const auto patches = bisect_patches(counts, 2, 2);
   ASSERT_EQ(patches[0].upper[0], 10);
-  const auto plan = halo_plan(patches, cells, 2, 0);
+  const auto plan = halo_plan(patches, cells, 2, 2, 0);
   ASSERT_EQ(plan.size(), 1u);
   EXPECT_EQ(plan[0].rank, 1);
   EXPECT_EQ(plan[0].nodes.size(), 5u * 15u);
-  EXPECT_THROW(halo_plan(patches, cells, 2, 2), std::invalid_argument);
+  // Reaching one layer (the linear kernel): columns 9–11, 13 nodes high (one ghost row each
+  // side).
+  EXPECT_EQ(halo_plan(patches, cells, 2, 1, 0)[0].nodes.size(), 3u * 13u);
+  EXPECT_THROW(halo_plan(patches, cells, 2, 2, 2), std::invalid_argument);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -55,11 +56,12 @@ void refuse_unsupported(const Simulation<D>& s) {
 
 template <int D>
 PatchRun<D>::PatchRun(const Communicator& world, std::vector<Patch<D>> patches,
-                      const Grid<D>& window)
+                      const Grid<D>& window, int reach)
     : world_(world),
       patches_(std::move(patches)),
-      halo_(world, halo_plan(patches_, window.cells(), Grid<D>::kGhost, world.rank()), window) {
-  statistics_.imbalance = imbalance(patches_);
+      halo_(world, halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach, world.rank()),
+            window) {
+  start_imbalance_ = imbalance(patches_);
   constexpr double kOpen = std::numeric_limits<double>::infinity();
   for (const auto& p : patches_) {
     Box box;
@@ -83,15 +85,18 @@ int PatchRun<D>::owner(const Vec<D>& x) const {
 
 template <int D>
 void PatchRun<D>::after_scatter(Simulation<D>& simulation, ScatteredFields fields) {
+  const double start = omp_get_wtime();
   auto& grids = simulation.fields();
   for (int k = 0; k < grids.count(); ++k) {
     halo_.complete(grids.field(k), fields);
-    halo_this_step_ += halo_.last_doubles_sent();
+    doubles_sent_ += halo_.last_doubles_sent();
   }
+  exchange_seconds_ += omp_get_wtime() - start;
 }
 
 template <int D>
 void PatchRun<D>::end_of_step(Simulation<D>& simulation) {
+  const double start = omp_get_wtime();
   auto& points = simulation.points();
   const long n = points.size();
   const Box& mine = boxes_[world_.rank()];
@@ -108,10 +113,26 @@ void PatchRun<D>::end_of_step(Simulation<D>& simulation) {
   for (std::size_t t = 1; t < leaving_.size(); ++t)
     leaving_[0].insert(leaving_[0].end(), leaving_[t].begin(), leaving_[t].end());
   const long sent = migrate_points(world_, leaving_[0], points);
-  statistics_.migrated += sent;
+  migrated_ += sent;
   if (sent > 0 || points.size() != n) simulation.points_changed();
-  statistics_.halo_doubles_per_step = halo_this_step_;
-  halo_this_step_ = 0;
+  points_ = points.size();
+  ++steps_;
+  exchange_seconds_ += omp_get_wtime() - start;
+}
+
+template <int D>
+void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& out) const {
+  std::vector<double> sums = {static_cast<double>(doubles_sent_), static_cast<double>(migrated_),
+                              static_cast<double>(points_)};
+  world_.sum_in_rank_order(sums);
+  const double steps = std::max<long>(steps_, 1);
+  out.emplace_back("distributed.halo_bytes_per_step", sums[0] * sizeof(double) / steps);
+  out.emplace_back("distributed.exchange_seconds_per_step", world_.max(exchange_seconds_ / steps));
+  out.emplace_back("distributed.migrated_points", sums[1]);
+  out.emplace_back("distributed.start_imbalance", start_imbalance_);
+  const double most = world_.max(static_cast<double>(points_));
+  out.emplace_back("distributed.imbalance",
+                   sums[2] > 0.0 ? most * world_.size() / sums[2] - 1.0 : 0.0);
 }
 
 template <int D>
@@ -137,10 +158,17 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
   } catch (const std::invalid_argument& e) {
     throw SetupError(e.what());
   }
-  const NodeBox<D> box = touched_nodes(patches[world.rank()], grid.cells(), Grid<D>::kGhost);
+  // The window's layers beyond the patch: a point in the patch touches the nodes of its cell
+  // with the linear kernel, one layer more each side with the quadratic and two (upwards)
+  // with the cubic B-spline; a round-off at the patch's side adds one. So one layer for
+  // the linear kernel, the grid's ghost width for the wider ones.
+  const int width =
+      static_cast<int>(std::lround(std::pow(simulation.transfer().stencil_size(), 1.0 / D)));
+  const int reach = width <= 2 ? 1 : Grid<D>::kGhost;
+  const NodeBox<D> box = touched_nodes(patches[world.rank()], grid.cells(), Grid<D>::kGhost, reach);
   const IVec<D> ghost = IVec<D>::Constant(Grid<D>::kGhost);
   const Grid<D> window = grid.window(box.first + ghost, box.last + ghost);
-  auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window);
+  auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
   std::vector<char> keep(points.size());
   for (long p = 0; p < points.size(); ++p)
     keep[p] = hook->owner(points.position[p]) == world.rank();

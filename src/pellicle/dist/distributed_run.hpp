@@ -16,24 +16,22 @@
 
 namespace pellicle {
 
-//! Traffic and balance of a distributed run, for reports and scaling measurements.
-struct DistributedStatistics {
-  long halo_doubles_per_step = 0;  //!< doubles this rank sent to complete node sums, last step
-  long migrated = 0;               //!< points this rank sent away over the run
-  double imbalance = 0.0;          //!< of the patches (decomposition.hpp)
-};
-
 template <int D>
 class PatchRun final : public StepHook<D> {
  public:
-  //! `window`: this rank's grid (Grid::window), in the whole grid's index space.
-  PatchRun(const Communicator& world, std::vector<Patch<D>> patches, const Grid<D>& window);
+  //! `window`: this rank's grid (Grid::window) of its patch's nodes and `reach` layers more.
+  PatchRun(const Communicator& world, std::vector<Patch<D>> patches, const Grid<D>& window,
+           int reach);
 
   void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
   void end_of_step(Simulation<D>& simulation) override;
+  //! distributed.halo_bytes_per_step (all ranks' node shares sent, per step),
+  //! distributed.exchange_seconds_per_step (the slowest rank's time in halo sums and
+  //! migration, waiting included), distributed.migrated_points (over the run) and
+  //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now).
+  void summary_figures(std::vector<std::pair<std::string, double>>& out) const override;
 
   const std::vector<Patch<D>>& patches() const { return patches_; }
-  const DistributedStatistics& statistics() const { return statistics_; }
   //! The rank whose patch holds x (a patch at the domain's side reaches past it).
   int owner(const Vec<D>& x) const;
 
@@ -50,8 +48,10 @@ class PatchRun final : public StepHook<D> {
   std::vector<Box> boxes_;
   HaloSums<D> halo_;
   std::vector<std::vector<LeavingPoint>> leaving_;  //!< per thread
-  long halo_this_step_ = 0;
-  DistributedStatistics statistics_;
+  double start_imbalance_ = 0.0;
+  long points_ = 0;  //!< this rank's, after the last step
+  long steps_ = 0, doubles_sent_ = 0, migrated_ = 0;
+  double exchange_seconds_ = 0.0;
 };
 
 //! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its

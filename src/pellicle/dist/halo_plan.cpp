@@ -7,11 +7,11 @@
 namespace pellicle {
 
 template <int D>
-NodeBox<D> touched_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost) {
+NodeBox<D> touched_nodes(const Patch<D>& p, const IVec<D>& cells, int ghost, int reach) {
   NodeBox<D> box;
   for (int d = 0; d < D; ++d) {
-    box.first[d] = std::max(p.lower[d] - ghost, -ghost);
-    box.last[d] = std::min(p.upper[d] + ghost, cells[d] + ghost);
+    box.first[d] = std::max(p.lower[d] - reach, -ghost);
+    box.last[d] = std::min(p.upper[d] + reach, cells[d] + ghost);
   }
   return box;
 }
@@ -43,25 +43,25 @@ NodeBox<D> intersection(const NodeBox<D>& a, const NodeBox<D>& b) {
 
 template <int D>
 std::vector<NodesSharedWith> halo_plan(const std::vector<Patch<D>>& patches, const IVec<D>& cells,
-                                       int ghost, int rank) {
+                                       int ghost, int reach, int rank) {
   if (rank < 0 || rank >= static_cast<int>(patches.size()))
     throw std::invalid_argument("no patch for rank " + std::to_string(rank));
-  const NodeBox<D> mine = touched_nodes(patches[rank], cells, ghost);
+  const NodeBox<D> mine = touched_nodes(patches[rank], cells, ghost, reach);
   std::vector<NodesSharedWith> plan;
   for (int s = 0; s < static_cast<int>(patches.size()); ++s) {
     if (s == rank) continue;
-    const NodeBox<D> both = intersection(mine, touched_nodes(patches[s], cells, ghost));
+    const NodeBox<D> both = intersection(mine, touched_nodes(patches[s], cells, ghost, reach));
     if (!both.empty()) plan.push_back({s, node_indices(both, cells, ghost)});
   }
   return plan;
 }
 
 template std::vector<NodesSharedWith> halo_plan<2>(const std::vector<Patch<2>>&, const IVec<2>&,
-                                                   int, int);
+                                                   int, int, int);
 template std::vector<NodesSharedWith> halo_plan<3>(const std::vector<Patch<3>>&, const IVec<3>&,
-                                                   int, int);
-template NodeBox<2> touched_nodes<2>(const Patch<2>&, const IVec<2>&, int);
-template NodeBox<3> touched_nodes<3>(const Patch<3>&, const IVec<3>&, int);
+                                                   int, int, int);
+template NodeBox<2> touched_nodes<2>(const Patch<2>&, const IVec<2>&, int, int);
+template NodeBox<3> touched_nodes<3>(const Patch<3>&, const IVec<3>&, int, int);
 template std::vector<long> node_indices<2>(const NodeBox<2>&, const IVec<2>&, int);
 template std::vector<long> node_indices<3>(const NodeBox<3>&, const IVec<3>&, int);
 

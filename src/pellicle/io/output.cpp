@@ -209,6 +209,8 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
   const SystemState<D> s = simulation.state();
   const auto& p = simulation.points();
   const BodySums<D> sums(simulation);
+  std::vector<std::pair<std::string, double>> figures;
+  for (const auto& hook : simulation.hooks()) hook->summary_figures(figures);
   if (rank_ != 0) return;
   const long points = sums.total_points();
   const double point_steps = static_cast<double>(points) * simulation.step_count();
@@ -249,6 +251,13 @@ void OutputWriter<D>::finish(const Simulation<D>& simulation, const std::string&
     for (std::size_t k = 0; k < escaped_.size(); ++k)
       j << (k ? ", " : "") << json_string(p.bodies[simulation.enclosed()[k].filler].name) << ": "
         << escaped_[k];
+    j << "}";
+  }
+  if (!figures.empty()) {
+    j << ",\n  \"figures\": {";
+    for (std::size_t k = 0; k < figures.size(); ++k)
+      j << (k ? ", " : "") << json_string(figures[k].first) << ": "
+        << json_number(figures[k].second);
     j << "}";
   }
   j << "\n}\n";

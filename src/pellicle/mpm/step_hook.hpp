@@ -43,6 +43,9 @@ class StepHook {
   //! After stage `materials`, when no stage of the step reads its stencils any more: where a
   //! distributed run moves points that left their patch to its owner.
   virtual void end_of_step(Simulation<D>&) {}
+  //! Figures of the run for summary.json ("figures": name → value), asked once at its end on
+  //! every rank of a distributed run (so a hook may reduce them over the ranks).
+  virtual void summary_figures(std::vector<std::pair<std::string, double>>& /*out*/) const {}
   //! The hook needs each body in its own grid field (contact models).
   virtual bool needs_body_fields() const { return false; }
   //! Hooks that carry state from step to step name it (a checkpoint group); empty: none.
