@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <thread>
 #include <iostream>
 #include <optional>
 
@@ -256,6 +257,8 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
 #ifdef PELLICLE_WITH_MPI
     if (distributed) {  // the other ranks wait in a collective call: stop them all
       std::fprintf(stderr, "pellicle: error on rank %d: %s\n", world_rank(o), e.what());
+      // No summary (it needs every rank); the status file and the history rows so far stay.
+      mark_output_directory(c.output.directory, std::string("failed: ") + e.what());
       std::fflush(stderr);
       o.world->abort(kExitNumericalFailure);
     }
@@ -286,14 +289,17 @@ void set_threads(const RunOptions& o) {
     return;
   }
 #ifdef PELLICLE_WITH_MPI
-  if (o.world && !std::getenv("OMP_NUM_THREADS"))
-    omp_set_num_threads(std::max(1, omp_get_num_procs() / o.world->ranks_on_this_machine()));
-  if (o.world && o.world->rank() == 0 &&
-      omp_get_max_threads() * o.world->ranks_on_this_machine() > omp_get_num_procs())
+  if (!o.world) return;
+  // mpirun may bind a rank to fewer cores than the machine has (omp_get_num_procs).
+  const int machine = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int ranks = o.world->ranks_on_this_machine();
+  if (!std::getenv("OMP_NUM_THREADS"))
+    omp_set_num_threads(std::max(1, std::min(omp_get_num_procs(), machine / ranks)));
+  if (o.world->rank() == 0 && omp_get_max_threads() * ranks > machine)
     std::fprintf(stderr,
-                 "pellicle: warning: %d ranks × %d threads on %d processors: the threads will "
-                 "wait for each other; use --threads or OMP_NUM_THREADS\n",
-                 o.world->ranks_on_this_machine(), omp_get_max_threads(), omp_get_num_procs());
+                 "pellicle: warning: %d ranks × %d threads on %d processors: more than the "
+                 "processors, so they wait for each other; use fewer ranks or --threads\n",
+                 ranks, omp_get_max_threads(), machine);
 #endif
 }
 
