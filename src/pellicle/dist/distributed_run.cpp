@@ -158,13 +158,11 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
   } catch (const std::invalid_argument& e) {
     throw SetupError(e.what());
   }
-  // The window's layers beyond the patch: a point in the patch touches the nodes of its cell
-  // with the linear kernel, one layer more each side with the quadratic and two (upwards)
-  // with the cubic B-spline; a round-off at the patch's side adds one. So one layer for
-  // the linear kernel, the grid's ghost width for the wider ones.
-  const int width =
-      static_cast<int>(std::lround(std::pow(simulation.transfer().stencil_size(), 1.0 / D)));
-  const int reach = width <= 2 ? 1 : Grid<D>::kGhost;
+  // The window: the patch's nodes and the layers its points' stencils reach beyond it.
+  const int reach = simulation.transfer().node_reach();
+  if (reach > Grid<D>::kGhost)
+    throw SetupError("the kernel reaches " + std::to_string(reach) +
+                     " node layers beyond a cell, more than the grid's ghost layers");
   const NodeBox<D> box = touched_nodes(patches[world.rank()], grid.cells(), Grid<D>::kGhost, reach);
   const IVec<D> ghost = IVec<D>::Constant(Grid<D>::kGhost);
   const Grid<D> window = grid.window(box.first + ghost, box.last + ghost);

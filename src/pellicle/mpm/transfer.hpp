@@ -82,6 +82,9 @@ class Transfer {
 
   //! Nodes per point stencil: the kernel's width to the power D.
   virtual int stencil_size() const = 0;
+  //! Node layers beyond a box of cells that the stencils of the points inside it reach,
+  //! round-off at the box's sides included (a distributed run's window, dist/).
+  virtual int node_reach() const = 0;
   //! Node ids and weights N_i(x_p) of points [begin, end) at their current positions,
   //! stencil_size() of each per point, point `begin` first. Computed afresh, not taken from
   //! the step's stencils (those hold the positions at the start of the step), and touching

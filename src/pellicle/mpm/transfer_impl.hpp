@@ -150,6 +150,14 @@ class TransferImpl final : public Transfer<D> {
     return Stencil<D, Kernel>::size;
   }
 
+  int node_reach() const override {
+    // Points of cell [c, c + 1) with c = 100, moved by far more than round-off either way;
+    // first() does not decrease with ξ, so the ends give the reach.
+    const int below = 100 - kernel_.first(100.0 - 1e-9);
+    const int above = kernel_.first(101.0 + 1e-9) + Kernel::width - 1 - 101;
+    return std::max({below, above, 0});
+  }
+
   void node_weights(const Particles<D>& points, const Grid<D>& grid, long begin, long end,
                     long* nodes, double* weights) const override {
     for (long p = begin; p < end; ++p) {
