@@ -55,6 +55,19 @@ for s in 000000 000003; do
   done
 done
 
+# Continuing on two ranks from a one-process checkpoint: the last row of the history as one
+# process continues it (time and step exactly, total energy to round-off).
+expect 0 "results" -- "$pellicle" run --quiet "$cases/two_disks.toml" --out "$work/first" \
+  "${short[@]}" --checkpoint-interval 0.15
+more=(--set grid.cell=0.025 --set solver.end_time=0.6 --restart "$work/first/checkpoint.h5")
+expect 0 "results" -- "$pellicle" run --quiet "$cases/two_disks.toml" --out "$work/on1" "${more[@]}"
+expect 0 "results" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/on2" "${more[@]}"
+tail -1 "$work/on1/history.csv" >"$work/last1"
+tail -1 "$work/on2/history.csv" >"$work/last2"
+awk -F, 'NR == FNR { t = $1; s = $2; e = $8; next }
+         { exit !($1 == t && $2 == s && ($8 - e) ^ 2 <= (1e-9 * e) ^ 2) }' \
+  "$work/last1" "$work/last2" || fail "a restart on two ranks ends elsewhere than on one"
+
 # Refused before anything runs (exit 2, named, reported once).
 expect 2 "membrane body 'net' cannot run on more than one rank yet" -- \
   "${run2[@]}" "$cases/ball_and_net.toml" --out "$work/net"
