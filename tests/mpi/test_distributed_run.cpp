@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pellicle/dist/distributed_run.hpp"
@@ -33,6 +34,7 @@ double momentum_scale(const Simulation<D>& s) {
 struct Agreement {
   double time = 0.0, energy = 0.0, momentum = 0.0, centre = 0.0;
   long steps = 0;
+  std::vector<std::pair<std::string, double>> figures;  //!< the split run's summary figures
 };
 
 //! Run the case to its end time whole and split (at most `max_steps`: a broken split run
@@ -42,7 +44,7 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
                        long max_steps) {
   auto whole = validation::builtin_simulation<D>(file, overrides);
   auto split = validation::builtin_simulation<D>(file, overrides);
-  distribute(*split, *world);
+  const PatchRun<D>& patches = distribute(*split, *world);
   std::vector<long> points = {split->point_count()};
   world->sum(points);
   EXPECT_EQ(points[0], whole->point_count()) << "every point is on exactly one rank";
@@ -91,6 +93,7 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
   }
   EXPECT_TRUE(whole->finished());
   EXPECT_TRUE(split->finished());
+  patches.summary_figures(a.figures);
   if (world->rank() == 0)
     std::printf(
         "%ld steps on %d ranks: largest differences, relative: time %.2g, energy %.2g, "
@@ -120,6 +123,19 @@ TEST(DistributedRun, TwoDisksWithLinearFlipAndUslAgreeWithOneProcess) {
        "solver.scheme=\"usl\"", "solver.end_time=2.2"},
       400);
   expect_agreement(a);
+}
+
+TEST(DistributedRun, SodSplitAnewAsTheGasMovesAgreesWithOneProcess) {
+  // The gas flows across the cuts; a rebalance limit of 0.1 % splits the patches again as
+  // soon as a few points have moved: new windows, new shared nodes, points sent across.
+  const Agreement a = compare_runs<2>("sod_shock_tube.toml", {"solver.rebalance=0.001"}, 1500);
+  expect_agreement(a);
+  double rebalances = -1.0;
+  for (const auto& [name, value] : a.figures)
+    if (name == "distributed.rebalances") rebalances = value;
+  if (world->size() > 1) {
+    EXPECT_GT(rebalances, 0.0);
+  }
 }
 
 TEST(DistributedRun, SodShockTubeAgreesWithOneProcess) {

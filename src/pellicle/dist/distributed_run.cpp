@@ -29,6 +29,41 @@ IVec<D> cell_of(const Grid<D>& grid, const Vec<D>& x) {
   return c;
 }
 
+//! Points per cell of the grid (this rank's points).
+template <int D>
+CellCounts<D> count_points(const Grid<D>& grid, const std::vector<Vec<D>>& positions) {
+  CellCounts<D> counts{grid.cells(), {}};
+  long cells = 1;
+  for (int d = 0; d < D; ++d) cells *= grid.cells()[d];
+  counts.points.assign(cells, 0);
+  for (const auto& x : positions) {
+    const IVec<D> c = cell_of(grid, x);
+    long flat = c[D - 1];
+    for (int d = D - 2; d >= 0; --d) flat = flat * grid.cells()[d] + c[d];
+    ++counts.points[flat];
+  }
+  return counts;
+}
+
+template <int D>
+std::vector<Patch<D>> split(const CellCounts<D>& counts, int ranks) {
+  try {
+    // Patches at least two ghost widths wide: a halo reaches only adjacent patches, and a
+    // window that holds a ghost beyond a wall holds its mirror image too.
+    return bisect_patches(counts, ranks, 2 * Grid<D>::kGhost);
+  } catch (const std::invalid_argument& e) {
+    throw SetupError(e.what());
+  }
+}
+
+//! The grid a rank stores: its patch's nodes and the layers its points' stencils reach.
+template <int D>
+Grid<D> window_of(const Grid<D>& grid, const Patch<D>& patch, int reach) {
+  const NodeBox<D> box = touched_nodes(patch, grid.cells(), Grid<D>::kGhost, reach);
+  const IVec<D> ghost = IVec<D>::Constant(Grid<D>::kGhost);
+  return grid.window(box.first + ghost, box.last + ghost);
+}
+
 //! What distributed runs do not take yet, and why.
 template <int D>
 void refuse_unsupported(const Simulation<D>& s) {
@@ -57,12 +92,18 @@ void refuse_unsupported(const Simulation<D>& s) {
 template <int D>
 PatchRun<D>::PatchRun(const Communicator& world, std::vector<Patch<D>> patches,
                       const Grid<D>& window, int reach)
-    : world_(world),
-      patches_(std::move(patches)),
-      halo_(world, halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach, world.rank()),
-            window) {
+    : world_(world), reach_(reach) {
+  use_patches(std::move(patches), window);
   start_imbalance_ = imbalance(patches_);
+}
+
+template <int D>
+void PatchRun<D>::use_patches(std::vector<Patch<D>> patches, const Grid<D>& window) {
+  patches_ = std::move(patches);
+  halo_.emplace(world_, halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach_, world_.rank()),
+                window);
   constexpr double kOpen = std::numeric_limits<double>::infinity();
+  boxes_.clear();
   for (const auto& p : patches_) {
     Box box;
     for (int d = 0; d < D; ++d) {
@@ -88,8 +129,8 @@ void PatchRun<D>::after_scatter(Simulation<D>& simulation, ScatteredFields field
   const double start = omp_get_wtime();
   auto& grids = simulation.fields();
   for (int k = 0; k < grids.count(); ++k) {
-    halo_.complete(grids.field(k), fields);
-    doubles_sent_ += halo_.last_doubles_sent();
+    halo_->complete(grids.field(k), fields);
+    doubles_sent_ += halo_->last_doubles_sent();
   }
   exchange_seconds_ += omp_get_wtime() - start;
 }
@@ -97,6 +138,14 @@ void PatchRun<D>::after_scatter(Simulation<D>& simulation, ScatteredFields field
 template <int D>
 void PatchRun<D>::end_of_step(Simulation<D>& simulation) {
   const double start = omp_get_wtime();
+  migrate(simulation);
+  if (++steps_ % kBalanceCheck == 0) rebalance(simulation);
+  points_ = simulation.points().size();
+  exchange_seconds_ += omp_get_wtime() - start;
+}
+
+template <int D>
+void PatchRun<D>::migrate(Simulation<D>& simulation) {
   auto& points = simulation.points();
   const long n = points.size();
   const Box& mine = boxes_[world_.rank()];
@@ -115,9 +164,26 @@ void PatchRun<D>::end_of_step(Simulation<D>& simulation) {
   const long sent = migrate_points(world_, leaving_[0], points);
   migrated_ += sent;
   if (sent > 0 || points.size() != n) simulation.points_changed();
-  points_ = points.size();
-  ++steps_;
-  exchange_seconds_ += omp_get_wtime() - start;
+}
+
+template <int D>
+void PatchRun<D>::rebalance(Simulation<D>& simulation) {
+  std::vector<long> total = {simulation.points().size()};
+  world_.sum(total);
+  const double most = world_.max(static_cast<double>(simulation.points().size()));
+  if (total[0] == 0 || most * world_.size() / total[0] - 1.0 <= simulation.settings().rebalance)
+    return;
+  // The whole run's points per cell, split anew; the points go to their new patches.
+  const Grid<D>& grid = simulation.grid();
+  CellCounts<D> counts = count_points(grid, simulation.points().position);
+  world_.sum(counts.points);
+  std::vector<Patch<D>> patches = split(counts, world_.size());
+  const Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
+  use_patches(std::move(patches), window);
+  simulation.use_grid_window(window);
+  migrate(simulation);
+  simulation.points_changed();
+  ++rebalances_;
 }
 
 template <int D>
@@ -129,6 +195,7 @@ void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& o
   out.emplace_back("distributed.halo_bytes_per_step", sums[0] * sizeof(double) / steps);
   out.emplace_back("distributed.exchange_seconds_per_step", world_.max(exchange_seconds_ / steps));
   out.emplace_back("distributed.migrated_points", sums[1]);
+  out.emplace_back("distributed.rebalances", rebalances_);
   out.emplace_back("distributed.start_imbalance", start_imbalance_);
   const double most = world_.max(static_cast<double>(points_));
   out.emplace_back("distributed.imbalance",
@@ -140,32 +207,12 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
   refuse_unsupported(simulation);
   const Grid<D>& grid = simulation.grid();
   auto& points = simulation.points();
-  CellCounts<D> counts{grid.cells(), {}};
-  long cells = 1;
-  for (int d = 0; d < D; ++d) cells *= grid.cells()[d];
-  counts.points.assign(cells, 0);
-  for (const auto& x : points.position) {
-    const IVec<D> c = cell_of(grid, x);
-    long flat = c[D - 1];
-    for (int d = D - 2; d >= 0; --d) flat = flat * grid.cells()[d] + c[d];
-    ++counts.points[flat];
-  }
-  std::vector<Patch<D>> patches;
-  try {
-    // Patches at least two ghost widths wide: a halo reaches only adjacent patches, and a
-    // window that holds a ghost beyond a wall holds its mirror image too.
-    patches = bisect_patches(counts, world.size(), 2 * Grid<D>::kGhost);
-  } catch (const std::invalid_argument& e) {
-    throw SetupError(e.what());
-  }
-  // The window: the patch's nodes and the layers its points' stencils reach beyond it.
+  std::vector<Patch<D>> patches = split(count_points(grid, points.position), world.size());
   const int reach = simulation.transfer().node_reach();
   if (reach > Grid<D>::kGhost)
     throw SetupError("the kernel reaches " + std::to_string(reach) +
                      " node layers beyond a cell, more than the grid's ghost layers");
-  const NodeBox<D> box = touched_nodes(patches[world.rank()], grid.cells(), Grid<D>::kGhost, reach);
-  const IVec<D> ghost = IVec<D>::Constant(Grid<D>::kGhost);
-  const Grid<D> window = grid.window(box.first + ghost, box.last + ghost);
+  const Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
   std::vector<char> keep(points.size());
   for (long p = 0; p < points.size(); ++p)

@@ -6,6 +6,7 @@
 //! through the communicator in rank order, so np = 1, 2, 3 … agree to round-off.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "pellicle/dist/communicator.hpp"
@@ -25,10 +26,14 @@ class PatchRun final : public StepHook<D> {
 
   void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
   void end_of_step(Simulation<D>& simulation) override;
+  //! Every few steps the patches are split anew when the ranks' points are out of balance by
+  //! more than the run's `rebalance` fraction (SimulationSettings).
+  static constexpr long kBalanceCheck = 10;
   //! distributed.halo_bytes_per_step (all ranks' node shares sent, per step),
   //! distributed.exchange_seconds_per_step (the slowest rank's time in halo sums and
   //! migration, waiting included), distributed.migrated_points (over the run) and
-  //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now).
+  //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now) and
+  //! distributed.rebalances.
   void summary_figures(std::vector<std::pair<std::string, double>>& out) const override;
 
   const std::vector<Patch<D>>& patches() const { return patches_; }
@@ -43,14 +48,21 @@ class PatchRun final : public StepHook<D> {
       return (x.array() >= lower.array()).all() && (x.array() < upper.array()).all();
     }
   };
+  void use_patches(std::vector<Patch<D>> patches, const Grid<D>& window);
+  //! Send the points that left the patch to their ranks, take in the others'.
+  void migrate(Simulation<D>& simulation);
+  //! Split the patches anew if the ranks' points are out of balance.
+  void rebalance(Simulation<D>& simulation);
+
   const Communicator& world_;
+  int reach_;
   std::vector<Patch<D>> patches_;
   std::vector<Box> boxes_;
-  HaloSums<D> halo_;
+  std::optional<HaloSums<D>> halo_;
   std::vector<std::vector<LeavingPoint>> leaving_;  //!< per thread
   double start_imbalance_ = 0.0;
   long points_ = 0;  //!< this rank's, after the last step
-  long steps_ = 0, doubles_sent_ = 0, migrated_ = 0;
+  long steps_ = 0, doubles_sent_ = 0, migrated_ = 0, rebalances_ = 0;
   double exchange_seconds_ = 0.0;
 };
 

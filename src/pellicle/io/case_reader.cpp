@@ -268,6 +268,7 @@ void read_solver(TomlParameters& root, Case<D>& c) {
   if (c.settings.fixed_dt > 0.0) c.settings.cfl_fraction = 0.0;
   c.settings.cfl_limit = s->number_or("cfl_limit", 1.0, NumberRange::positive());
   c.settings.max_steps = s->integer_or("max_steps", c.settings.max_steps, 1, 1000000000000L);
+  c.settings.rebalance = s->number_or("rebalance", c.settings.rebalance, NumberRange::positive());
   c.time_step_key = s->has("dt") ? "solver.dt" : "solver.cfl";
   c.time_step_where = s->location(s->has("dt") ? "dt" : "cfl");
   c.gravity = read_vector_or<D>(*s, "gravity", Vec<D>::Zero());

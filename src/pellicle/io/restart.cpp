@@ -29,7 +29,7 @@ bool restart_safe(const std::string& table, const std::string& key) {
   // when the checkpoint is read.
   if (table == "solver")
     return key == "dt" || key == "cfl" || key == "cfl_limit" || key == "end_time" ||
-           key == "velocity_update" || key == "flip_fraction";
+           key == "velocity_update" || key == "flip_fraction" || key == "rebalance";
   if (table == "grid") return key == "boundary";
   return false;
 }

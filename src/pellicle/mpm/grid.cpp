@@ -20,7 +20,7 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
 template <int D>
 Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last) const {
   for (int d = 0; d < D; ++d)
-    if (first[d] < first_[d] || last[d] >= first_[d] + nodes_[d] || last[d] < first[d])
+    if (first[d] < 0 || last[d] > cells_[d] + 2 * kGhost || last[d] < first[d])
       throw std::invalid_argument("a grid window must lie within the grid");
   Grid<D> w = *this;
   w.allocate(first, last - first + IVec<D>::Ones());

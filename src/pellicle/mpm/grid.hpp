@@ -34,7 +34,8 @@ class Grid {
   //! (inclusive, in grid index space, ghosts included). It keeps the whole grid's origin,
   //! domain and faces, and takes node indices in the whole grid's index space, so a point's
   //! cell units and kernel weights are bitwise those of the whole grid; only the storage and
-  //! flat indices are local. The face conditions apply where the window reaches a face.
+  //! flat indices are local. The face conditions apply where the window reaches a face. A
+  //! window's window may lie anywhere in the whole grid (a rank's patch moved).
   Grid window(const IVec<D>& first, const IVec<D>& last) const;
 
   double cell() const { return h_; }

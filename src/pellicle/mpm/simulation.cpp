@@ -94,6 +94,7 @@ void Simulation<D>::points_changed() {
 template <int D>
 void Simulation<D>::use_grid_window(const Grid<D>& window) {
   fields_.replace_grid(window);
+  for (auto& hook : hooks_) hook->grid_replaced();
 }
 
 template <int D>

@@ -35,6 +35,9 @@ struct SimulationSettings {
   //! A run that reaches this many steps before end_time stops (exit 3): a time step that has
   //! collapsed, or one that was far smaller than meant.
   long max_steps = 100000000;
+  //! Distributed runs: the patches are split anew when the most points on a rank exceed
+  //! the mean by more than this fraction (checked every few steps).
+  double rebalance = 0.1;
 };
 
 //! Energies and momentum of the whole system (history.csv columns).

@@ -43,6 +43,9 @@ class StepHook {
   //! After stage `materials`, when no stage of the step reads its stencils any more: where a
   //! distributed run moves points that left their patch to its owner.
   virtual void end_of_step(Simulation<D>&) {}
+  //! The grid's storage changed (a distributed run's window moved): node indices a hook
+  //! keeps are stale.
+  virtual void grid_replaced() {}
   //! Figures of the run for summary.json ("figures": name → value), asked once at its end on
   //! every rank of a distributed run (so a hook may reduce them over the ranks).
   virtual void summary_figures(std::vector<std::pair<std::string, double>>& /*out*/) const {}
