@@ -6,24 +6,7 @@ set -u
 mpirun=$1
 pellicle=$2
 cases=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
-
-expect() {  # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2
-  shift 3
-  "$@" >"$work/out" 2>"$work/err"
-  local got=$?
-  if [ "$got" -ne "$code" ]; then
-    fail "'$*' exited $got, expected $code"; cat "$work/err"
-  elif ! grep -qF -- "$pattern" "$work/out" "$work/err"; then
-    fail "'$*' did not print: $pattern"; cat "$work/out" "$work/err"
-  else
-    echo "ok: $* -> $code"
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 
 run2=("$mpirun" -np 2 --oversubscribe "$pellicle" run --quiet)
 short=(--set grid.cell=0.025 --set solver.end_time=0.3 --set output.snapshot_interval=0.1)

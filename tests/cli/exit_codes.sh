@@ -5,31 +5,15 @@ set -u
 pellicle=$1
 here=$2
 cases=$3
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-
-expect() {  # expect CODE PATTERN -- command...
-  local code=$1 pattern=$2
-  shift 3
-  "$@" >"$work/out" 2>"$work/err"
-  local got=$?
-  if [ "$got" -ne "$code" ]; then
-    echo "FAIL: '$*' exited $got, expected $code"; cat "$work/err"; failures=$((failures + 1))
-  elif ! grep -qF -- "$pattern" "$work/out" "$work/err"; then
-    echo "FAIL: '$*' did not print: $pattern"; cat "$work/out" "$work/err"; failures=$((failures + 1))
-  else
-    echo "ok: $* -> $code"
-  fi
-}
+. "$(dirname "$0")/expect.sh"
 
 # Success: check and a short run of the default case.
 expect 0 "check     ok" -- "$pellicle" check "$cases/two_disks.toml"
 expect 0 "results   $work/default" -- "$pellicle" run --quiet --out "$work/default" --set solver.end_time=0.05
 for f in history.csv summary.json points.pvd points_000000.vtu; do
-  [ -s "$work/default/$f" ] || { echo "FAIL: $f missing after a run"; failures=$((failures + 1)); }
+  [ -s "$work/default/$f" ] || fail "$f missing after a run"
 done
-[ "$(cat "$work/default/status")" = completed ] || { echo "FAIL: status not completed"; failures=$((failures + 1)); }
+[ "$(cat "$work/default/status")" = completed ] || fail "status not completed"
 
 # A run owns its directory: a used one is refused; --overwrite replaces Pellicle's files only
 # (the first run's extra snapshots go, a user's file stays).
@@ -38,14 +22,14 @@ expect 2 "default is not empty (another run's results, completed): give another 
 touch "$work/default/notes.txt"
 expect 0 "results" -- "$pellicle" run --quiet --overwrite --out "$work/default" \
   --set solver.end_time=0.05 --set output.snapshot_interval=0.05
-[ -e "$work/default/notes.txt" ] || { echo "FAIL: --overwrite removed a user's file"; failures=$((failures + 1)); }
+[ -e "$work/default/notes.txt" ] || fail "--overwrite removed a user's file"
 [ "$(ls "$work/default" | grep -c '\.vtu$')" -eq 2 ] ||
   { echo "FAIL: --overwrite left the first run's snapshots"; ls "$work/default"; failures=$((failures + 1)); }
 
 # Bad input: exit 2, nothing run, message with file:line:col and key.
 expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" check "$here/bad_key.toml"
 expect 2 "bad_key.toml:11:1: solver.end_tme: unknown key" -- "$pellicle" run --out "$work/bad" "$here/bad_key.toml"
-[ -e "$work/bad" ] && { echo "FAIL: bad input created output"; failures=$((failures + 1)); }
+[ -e "$work/bad" ] && fail "bad input created output"
 expect 2 "--set solver.cfl=2: solver.cfl: expected a number in (0, 1], found the integer 2" -- \
   "$pellicle" check "$cases/two_disks.toml" --set solver.cfl=2
 expect 2 "cannot open the case file" -- "$pellicle" run "$work/missing.toml"
@@ -88,7 +72,7 @@ expect_output_error "full disk at a surface run's first write" $? "$messages" \
 messages=$(no_room 8 "$work/snapshot" "$cases/two_disks.toml" --set solver.end_time=0.05)
 expect_output_error "full disk at the first snapshot" $? "$messages" \
   "cannot write $work/snapshot/points_000000.vtu"
-ls "$work/snapshot" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
+ls "$work/snapshot" | grep -q '\.part$' && fail "temporary file left"
 grep -qx failed "$work/snapshot/status" || { echo "FAIL: status after an output error: $(cat "$work/snapshot/status")"; failures=$((failures + 1)); }
 # A file system with no room even for the output directory: a tmpfs with no inode left
 # refuses new directories (ENOSPC). Where the system lets a user mount one in a namespace of
@@ -121,12 +105,12 @@ expect 3 "the gas has expanded into vacuum beyond what its points represent" -- 
 
 # Numerical failure: exit 3 with time, step, body, point; history and snapshots complete.
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/cfl" "$here/unstable.toml"
-grep -q "CFL number" "$work/err" || { echo "FAIL: CFL failure not named"; failures=$((failures + 1)); }
+grep -q "CFL number" "$work/err" || fail "CFL failure not named"
 expect 3 "body 'block', point" -- "$pellicle" run --quiet --out "$work/leave" "$here/leaves_grid.toml"
 grep -q '"status": "failed: numerical failure' "$work/leave/summary.json" ||
-  { echo "FAIL: summary.json does not record the failure"; failures=$((failures + 1)); }
-[ "$(cat "$work/leave/status")" = failed ] || { echo "FAIL: status not failed"; failures=$((failures + 1)); }
-ls "$work/leave" | grep -q '\.part$' && { echo "FAIL: temporary file left"; failures=$((failures + 1)); }
+  fail "summary.json does not record the failure"
+[ "$(cat "$work/leave/status")" = failed ] || fail "status not failed"
+ls "$work/leave" | grep -q '\.part$' && fail "temporary file left"
 
 # SIGTERM: the run stops after its step, writes checkpoint.h5 and an "interrupted" summary,
 # exits 143; the checkpoint restarts (with a longer end time) and a changed key is refused.
@@ -137,11 +121,11 @@ for _ in $(seq 100); do [ -f "$work/term/history.csv" ] && break; sleep 0.1; don
 sleep 0.5
 kill -TERM "$run"
 wait "$run"; code=$?
-[ "$code" -eq 143 ] || { echo "FAIL: SIGTERM exit code $code, expected 143"; failures=$((failures + 1)); }
-[ -f "$work/term/checkpoint.h5" ] || { echo "FAIL: no checkpoint after SIGTERM"; failures=$((failures + 1)); }
+[ "$code" -eq 143 ] || fail "SIGTERM exit code $code, expected 143"
+[ -f "$work/term/checkpoint.h5" ] || fail "no checkpoint after SIGTERM"
 grep -q '"status": "interrupted"' "$work/term/summary.json" ||
-  { echo "FAIL: summary.json does not say interrupted"; failures=$((failures + 1)); }
-[ "$(cat "$work/term/status")" = interrupted ] || { echo "FAIL: status not interrupted"; failures=$((failures + 1)); }
+  fail "summary.json does not say interrupted"
+[ "$(cat "$work/term/status")" = interrupted ] || fail "status not interrupted"
 stopped=$(grep -o '"time": [0-9.e+-]*' "$work/term/summary.json" | awk '{print $2}')
 expect 0 "results" -- "$pellicle" run --quiet --threads 1 --out "$work/resumed" \
   "$cases/two_disks.toml" --set "solver.end_time=$(awk -v t="$stopped" 'BEGIN{print t + 0.002}')" \
@@ -161,7 +145,7 @@ with open(sys.argv[1], "w") as f:
         f.write("%.9f,%.9f,%.9f,%.9f\n" % (5 + 2 * math.cos(a), 5 + 2 * math.sin(a), math.cos(a), math.sin(a)))
 PY
 expect 0 "error     max" -- "$pellicle" normals --points "$work/circle.csv" --cell 0.25 --method pca --out "$work/n.csv"
-[ "$(wc -l < "$work/n.csv")" -eq 101 ] || { echo "FAIL: normals output has the wrong length"; failures=$((failures + 1)); }
+[ "$(wc -l < "$work/n.csv")" -eq 101 ] || fail "normals output has the wrong length"
 # Orientation: outward from the centroid, or away from a given inside point, matches the
 # circle's exact (outward) normals; the report counts the reversed ones.
 expect 0 "side      0 of 100 normals (0 %) face opposite to the exact normal (--orient outward)" -- \
@@ -232,11 +216,11 @@ expect 2 "huge_sphere.toml:17:20: surface.smoothing_length: the initial cloud wo
   timeout 2 "$pellicle" check "$work/huge_sphere.toml"
 expect 2 "more than the 2.15e+09 a cloud can index" -- timeout 2 "$pellicle" run --quiet \
   --out "$work/huge" "$work/huge_sphere.toml"
-[ -e "$work/huge" ] && { echo "FAIL: an oversized surface case created output"; failures=$((failures + 1)); }
+[ -e "$work/huge" ] && fail "an oversized surface case created output"
 expect 2 "surface.smoothing_length: the problem needs about 3.41e+03 GB" -- \
   timeout 2 "$pellicle" check "$cases/surface_cdr_sphere.toml" --set surface.smoothing_length=3e-4
 grep -qF "this machine has available" "$work/err" ||
-  { echo "FAIL: the surface memory check does not name the available memory"; failures=$((failures + 1)); }
+  fail "the surface memory check does not name the available memory"
 expect 0 "(4.0 kB a point; the shape's area gave 7483 points before sampling)" -- \
   "$pellicle" check "$cases/surface_cdr_sphere.toml"
 
@@ -255,7 +239,7 @@ expect 0 '"bytes_per_point"' -- "$pellicle" bench --json --points 1000 --steps 1
 for c in two-disks two-disks-contact gas-box gas-in-membrane two-spheres-3d two-spheres-3d-musl \
   two-spheres-3d-flip; do
   grep -q "\"case\": \"$c\".*\"state_bytes_per_point\": [0-9]" "$work/out" ||
-    { echo "FAIL: pellicle bench --json has no result for $c"; failures=$((failures + 1)); }
+    fail "pellicle bench --json has no result for $c"
 done
 
 echo "$failures failure(s)"
