@@ -151,10 +151,10 @@ void PatchRun<D>::migrate(Simulation<D>& simulation) {
   const Box& mine = boxes_[world_.rank()];
   // The points that left the patch, in ascending order (each thread's share in turn).
   leaving_.resize(omp_get_max_threads());
+  for (auto& list : leaving_) list.clear();
 #pragma omp parallel
   {
     auto& leaving = leaving_[omp_get_thread_num()];
-    leaving.clear();
 #pragma omp for schedule(static)
     for (long p = 0; p < n; ++p)
       if (!mine.contains(points.position[p])) leaving.push_back({p, owner(points.position[p])});

@@ -44,8 +44,6 @@ class Grid {
   const IVec<D>& cells() const { return cells_; }  //!< cells across the domain per axis
   const IVec<D>& nodes() const { return nodes_; }  //!< nodes per axis stored (ghosts included)
   long node_count() const { return node_count_; }
-  //! Grid index of the first stored node: zero, except in a window.
-  const IVec<D>& first_node() const { return first_; }
   //! Position of node (i, j[, k]) given in grid index space (ghosts included).
   Vec<D> node_position(const IVec<D>& index) const {
     return origin_ + h_ * index.template cast<double>();
