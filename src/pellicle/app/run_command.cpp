@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
 #include <iostream>
 #include <optional>
+#include <thread>
 
 #include "pellicle/app/commands.hpp"
 #include "pellicle/app/stop_signals.hpp"
