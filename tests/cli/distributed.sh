@@ -52,7 +52,7 @@ awk -F, 'NR == FNR { t = $1; s = $2; e = $8; next }
   "$work/last1" "$work/last2" || fail "a restart on two ranks ends elsewhere than on one"
 
 # Refused before anything runs (exit 2, named, reported once).
-expect 2 "membrane body 'net' cannot run on more than one rank yet" -- \
+expect 2 "a contact model cannot run on more than one rank yet" -- \
   "${run2[@]}" "$cases/ball_and_net.toml" --out "$work/net"
 [ "$(grep -c 'cannot run on more than one rank' "$work/err")" = 1 ] || fail "refusal not reported once"
 expect 2 "probes cannot be written by a run on more than one rank yet" -- \

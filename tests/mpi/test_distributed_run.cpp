@@ -144,5 +144,27 @@ TEST(DistributedRun, SodShockTubeAgreesWithOneProcess) {
   expect_agreement(a);
 }
 
+TEST(DistributedRun, PendulumAgreesWithOneProcess) {
+  // A membrane string held at the top row of nodes swings across the patches' cut (0.5 s,
+  // past the bottom of its swing, 16,800 steps): its connectivity frames take neighbours in
+  // generation order, which migration reorders. Round-off differences grow along the swing
+  // as they do between one and two threads of one process (momentum 1.2e-12 of its largest
+  // value apart by 0.6 s), so the run stops at 0.5 s.
+  const Agreement a =
+      compare_runs<2>("pendulum.toml",
+                      {"grid.cell=0.05", "solver.end_time=0.5",
+                       "body[0].membrane={shape=\"polyline\", vertices=[[0.5, 0.9999], "
+                       "[0.252721318, 0.313057039]], points=80, thickness=0.01}",
+                       "body[0].point_masses=[[79, 3.3]]"},
+                      25000);
+  expect_agreement(a);
+}
+
+TEST(DistributedRun, BreathingSphereAgreesWithOneProcess) {
+  // A 3D membrane: mesh-connectivity frames of a sphere that every patch cuts.
+  const Agreement a = compare_runs<3>("sphere_breathing.toml", {"solver.end_time=0.03"}, 400);
+  expect_agreement(a);
+}
+
 }  // namespace
 }  // namespace pellicle

@@ -81,6 +81,17 @@ void Communicator::all_to_all(const std::vector<std::vector<double>>& to_rank,
   for (auto& in : incoming) from_rank[in.rank] = std::move(in.values);
 }
 
+std::vector<double> Communicator::all_gather(const std::vector<double>& mine) const {
+  const int n = static_cast<int>(mine.size());
+  std::vector<int> counts(size_), offsets(size_, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(static_cast<std::size_t>(offsets.back()) + counts.back());
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                 MPI_COMM_WORLD);
+  return all;
+}
+
 void Communicator::abort(int exit_code) const {
   MPI_Abort(MPI_COMM_WORLD, exit_code);
   std::abort();  // MPI_Abort does not return

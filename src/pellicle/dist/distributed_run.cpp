@@ -8,6 +8,7 @@
 #include <string>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/dist/gathered_frames.hpp"
 #include "pellicle/dist/halo_plan.hpp"
 #include "pellicle/dist/migration.hpp"
 #include "pellicle/mpm/boundary/rigid_bodies.hpp"
@@ -73,9 +74,6 @@ void refuse_unsupported(const Simulation<D>& s) {
   };
   for (const auto& body : s.points().bodies) {
     const Material<D>& m = s.material(body.material);
-    if (m.is_membrane())
-      refuse("membrane body '" + body.name + "'",
-             "its frames need neighbouring points that other ranks hold");
     if (m.density_from_cells())
       refuse("fluid body '" + body.name + "' (density_update from cells)",
              "its cell densities need the cells other ranks hold");
@@ -171,13 +169,18 @@ void PatchRun<D>::rebalance(Simulation<D>& simulation) {
   std::vector<long> total = {simulation.points().size()};
   world_.sum(total);
   const double most = world_.max(static_cast<double>(simulation.points().size()));
-  if (total[0] == 0 || most * world_.size() / total[0] - 1.0 <= simulation.settings().rebalance)
-    return;
-  // The whole run's points per cell, split anew; the points go to their new patches.
+  const double limit = simulation.settings().rebalance;
+  if (total[0] == 0) return;
+  const double now = most * world_.size() / total[0] - 1.0;
+  if (now <= limit) return;
+  // The whole run's points per cell, split anew; the points go to their new patches. A split
+  // that would not cut the imbalance by half the limit is not worth the move (a few points
+  // in few cells may not split any better).
   const Grid<D>& grid = simulation.grid();
   CellCounts<D> counts = count_points(grid, simulation.points().position);
   world_.sum(counts.points);
   std::vector<Patch<D>> patches = split(counts, world_.size());
+  if (imbalance(patches) > now - 0.5 * limit) return;
   const Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
   use_patches(std::move(patches), window);
   simulation.use_grid_window(window);
@@ -214,6 +217,7 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
                      " node layers beyond a cell, more than the grid's ghost layers");
   const Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
+  gather_membrane_frames(world, points);
   std::vector<char> keep(points.size());
   for (long p = 0; p < points.size(); ++p)
     keep[p] = hook->owner(points.position[p]) == world.rank();

@@ -68,8 +68,8 @@ class PatchRun final : public StepHook<D> {
 
 //! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its
 //! patch's points and grid window and gets the PatchRun hook. Throws SetupError, naming the
-//! feature, for what distributed runs do not take yet (membranes, contact, rigid bodies,
-//! bodies inside membranes, fluids with cell densities). Returns the hook.
+//! feature, for what distributed runs do not take yet (contact, rigid bodies, bodies
+//! inside membranes, fluids with cell densities). Returns the hook.
 template <int D>
 const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world);
 
