@@ -33,6 +33,8 @@ double momentum_scale(const Simulation<D>& s) {
 //! Largest differences between the split and the whole run, relative to their scales.
 struct Agreement {
   double time = 0.0, energy = 0.0, momentum = 0.0, centre = 0.0;
+  double contact = 0.0;   //!< contact forces on the bodies, where a contact model acts
+  double material = 0.0;  //!< the materials' history sums (pressure, volume, …) per body
   long steps = 0;
   std::vector<std::pair<std::string, double>> figures;  //!< the split run's summary figures
 };
@@ -50,7 +52,8 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
   EXPECT_EQ(points[0], whole->point_count()) << "every point is on exactly one rank";
 
   Agreement a;
-  double energy_scale = 0.0, momentum_scale_max = 0.0;
+  double energy_scale = 0.0, momentum_scale_max = 0.0, force_scale = 0.0;
+  std::vector<double> material_scale;
   const double length = (whole->grid().upper() - whole->grid().lower()).norm();
   while (!whole->finished() && a.steps < max_steps) {
     whole->step();
@@ -66,6 +69,33 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
       a.energy = std::max(a.energy, std::abs(diff) / energy_scale);
     a.momentum = std::max(a.momentum,
                           (s.momentum - w.momentum).norm() / std::max(momentum_scale_max, 1e-300));
+    // Contact forces: each rank's over the nodes it owns, summed.
+    if (const auto* forces = whole->contact_forces()) {
+      std::vector<double> sums;
+      for (const auto& f : *split->contact_forces())
+        sums.insert(sums.end(), f.data(), f.data() + D);
+      world->sum_in_rank_order(sums);
+      double total = 0.0;
+      for (const auto& f : *forces) total += f.norm();
+      force_scale = std::max(force_scale, total);
+      for (std::size_t b = 0; b < forces->size(); ++b)
+        a.contact = std::max(a.contact, (Vec<D>(sums.data() + b * D) - (*forces)[b]).norm() /
+                                            std::max(force_scale, 1e-300));
+    }
+    // The materials' history sums of each body, each against its largest value so far.
+    std::vector<double> whole_sums, split_sums;
+    for (const auto& b : whole->points().bodies)
+      whole->material(b.material).history_sums(whole->points(), b.begin, b.end, whole_sums);
+    for (const auto& b : split->points().bodies)
+      split->material(b.material).history_sums(split->points(), b.begin, b.end, split_sums);
+    world->sum_in_rank_order(split_sums);
+    material_scale.resize(whole_sums.size(), 0.0);
+    for (std::size_t i = 0; i < whole_sums.size(); ++i) {
+      material_scale[i] = std::max(material_scale[i], std::abs(whole_sums[i]));
+      if (material_scale[i] > 0.0)
+        a.material =
+            std::max(a.material, std::abs(split_sums[i] - whole_sums[i]) / material_scale[i]);
+    }
     // Each body's centre of mass, from the split run's ranks' sums.
     const auto& bodies = whole->points().bodies;
     std::vector<double> sums;
@@ -97,8 +127,8 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
   if (world->rank() == 0)
     std::printf(
         "%ld steps on %d ranks: largest differences, relative: time %.2g, energy %.2g, "
-        "momentum %.2g, centres %.2g\n",
-        a.steps, world->size(), a.time, a.energy, a.momentum, a.centre);
+        "momentum %.2g, centres %.2g, contact forces %.2g, material sums %.2g\n",
+        a.steps, world->size(), a.time, a.energy, a.momentum, a.centre, a.contact, a.material);
   return a;
 }
 
@@ -107,6 +137,8 @@ void expect_agreement(const Agreement& a) {
   EXPECT_LE(a.energy, kTolerance);
   EXPECT_LE(a.momentum, kTolerance);
   EXPECT_LE(a.centre, kTolerance);
+  EXPECT_LE(a.contact, kTolerance);
+  EXPECT_LE(a.material, kTolerance);
 }
 
 TEST(DistributedRun, TwoDisksThroughTheirCollisionAgreeWithOneProcess) {
@@ -141,6 +173,58 @@ TEST(DistributedRun, SodSplitAnewAsTheGasMovesAgreesWithOneProcess) {
 TEST(DistributedRun, SodShockTubeAgreesWithOneProcess) {
   // Gas with artificial viscosity, walls at both ends, points crossing between patches.
   const Agreement a = compare_runs<2>("sod_shock_tube.toml", {}, 1500);
+  expect_agreement(a);
+}
+
+TEST(DistributedRun, SodWithCellDensitiesAgreesWithOneProcess) {
+  // Point densities from the mass spread to cell centres: cell sums across the cut.
+  const Agreement a = compare_runs<2>("sod_shock_tube.toml",
+                                      {"material[0].density_update=\"cell-quadratic\""}, 1500);
+  expect_agreement(a);
+}
+
+TEST(DistributedRun, TwoDisksWithContactReleaseAgreeWithOneProcess) {
+  // The disks meet on the cut between the patches: the contact decision at nodes both ranks
+  // hold reads colour functions summed over the cells they share.
+  const Agreement a = compare_runs<2>(
+      "two_disks.toml",
+      {"grid.cell=0.025", "solver.end_time=2.2", "contact={model=\"release\", criterion=\"both\"}"},
+      400);
+  expect_agreement(a);
+}
+
+TEST(DistributedRun, TwoBarsWithReleaseSplitAnewAgreeWithOneProcess) {
+  // Rebalancing moves the windows: the release state of each node (kept from step to step)
+  // goes to the new windows from the ranks that owned the nodes.
+  const Agreement a =
+      compare_runs<2>("two_bars_stick.toml",
+                      {"grid.cell=0.125", "solver.dt=1e-4", "solver.rebalance=0.001",
+                       "contact={model=\"release\", criterion=\"both\"}"},
+                      6000);
+  expect_agreement(a);
+  double rebalances = -1.0;
+  for (const auto& [name, value] : a.figures)
+    if (name == "distributed.rebalances") rebalances = value;
+  if (world->size() > 1) {
+    EXPECT_GT(rebalances, 0.0);
+  }
+}
+
+TEST(DistributedRun, PlatePulledByARigidGripAgreesWithOneProcess) {
+  // A grip as heavy in points as the plate: the cut falls where they meet, so the nodes
+  // between them are touched by the grip's points on one rank and the plate's on the other,
+  // and both ranks must prescribe them.
+  const Agreement a =
+      compare_runs<2>("j2_plate.toml",
+                      {"grid.upper=[2.25, 0.2]",
+                       "body[1].region={shape=\"box\", lower=[1.0, 0.0], upper=[2.0, 0.2]}"},
+                      5000);
+  expect_agreement(a);
+}
+
+TEST(DistributedRun, BlockSlidingOnARigidPlateAgreesWithOneProcess) {
+  // Coulomb friction against a rigid plate that spans every patch.
+  const Agreement a = compare_runs<2>("friction_block.toml", {}, 3000);
   expect_agreement(a);
 }
 

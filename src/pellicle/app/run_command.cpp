@@ -23,6 +23,7 @@
 #include "pellicle/io/vtk_writer.hpp"
 #ifdef PELLICLE_WITH_MPI
 #include "pellicle/dist/distributed_run.hpp"
+#include "pellicle/dist/window_carrier.hpp"
 #endif
 
 namespace pellicle {
@@ -45,20 +46,11 @@ int world_size(const RunOptions& o) {
 
 //! What a distributed run does not write yet, refused before anything runs.
 template <int D>
-void refuse_distributed_outputs(const Case<D>& c, const RunOptions& o) {
+void refuse_distributed_outputs(const Case<D>& c) {
   const SourceLocation where{c.file, 0, 0};
-  if (!c.probes.empty())
-    throw InputError(where, "probe",
-                     "probes cannot be written by a run on more than one rank yet; run without "
-                     "mpirun, or remove the [[probe]] tables");
   if (c.output.grid_snapshots)
     throw InputError(where, "output.grid_snapshots",
                      "grid snapshots cannot be written by a run on more than one rank yet");
-  if (c.output.checkpoint_interval > 0.0)
-    throw InputError(
-        where, o.checkpoint_interval > 0.0 ? "--checkpoint-interval" : "output.checkpoint_interval",
-        "checkpoints cannot be written by a run on more than one rank yet (a run "
-        "on more ranks can continue from a one-process checkpoint with --restart)");
 }
 
 const char* kinematics_name(Kinematics k) {
@@ -193,7 +185,7 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   const long total_points = simulation->point_count();
 #ifdef PELLICLE_WITH_MPI
   if (distributed) {
-    refuse_distributed_outputs(c, o);
+    refuse_distributed_outputs(c);
     try {
       distribute(*simulation, *o.world);
     } catch (const SetupError& e) {
@@ -224,18 +216,23 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     const std::string checkpoint_path = c.output.directory + "/checkpoint.h5";
     RunControl control;
     control.case_hash = header.case_hash;
-    if (!distributed)
-      control.checkpoint = [&] { write_checkpoint(checkpoint_path, *simulation, header); };
+    control.checkpoint = [&] {
+#ifdef PELLICLE_WITH_MPI
+      if (distributed) {
+        const WindowCarrier<D> to_whole_grid(simulation->grid(), *o.world);
+        write_checkpoint(checkpoint_path, *simulation, header, &to_whole_grid);
+        return;
+      }
+#endif
+      write_checkpoint(checkpoint_path, *simulation, header);
+    };
     control.checkpoint_interval = c.output.checkpoint_interval;
     control.stop = catch_stop_signals();
     control.ranks = simulation->collective();
     const RunStatistics r =
         run_simulation(*simulation, output, o.quiet || !lead ? nullptr : &progress, control);
     if (r.interrupted_by) {
-      if (lead && distributed)
-        std::fprintf(stderr, "pellicle: interrupted (signal %d) at t=%g, step %ld\n",
-                     r.interrupted_by, simulation->time(), simulation->step_count());
-      else if (lead)
+      if (lead)
         std::fprintf(stderr,
                      "pellicle: interrupted (signal %d) at t=%g, step %ld; continue with "
                      "--restart %s\n",

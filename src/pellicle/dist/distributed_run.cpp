@@ -11,7 +11,7 @@
 #include "pellicle/dist/gathered_frames.hpp"
 #include "pellicle/dist/halo_plan.hpp"
 #include "pellicle/dist/migration.hpp"
-#include "pellicle/mpm/boundary/rigid_bodies.hpp"
+#include "pellicle/dist/window_carrier.hpp"
 
 namespace pellicle {
 
@@ -60,9 +60,32 @@ std::vector<Patch<D>> split(const CellCounts<D>& counts, int ranks) {
 //! The grid a rank stores: its patch's nodes and the layers its points' stencils reach.
 template <int D>
 Grid<D> window_of(const Grid<D>& grid, const Patch<D>& patch, int reach) {
-  const NodeBox<D> box = touched_nodes(patch, grid.cells(), Grid<D>::kGhost, reach);
+  const IndexBox<D> box = touched_nodes(patch, grid.cells(), Grid<D>::kGhost, reach);
+  // Of the owned ghost layers beyond the grid's sides, those the points reach.
+  IndexBox<D> owned = owned_nodes(patch, grid.cells(), Grid<D>::kGhost);
+  owned = {owned.first.cwiseMax(box.first), owned.last.cwiseMin(box.last)};
   const IVec<D> ghost = IVec<D>::Constant(Grid<D>::kGhost);
-  return grid.window(box.first + ghost, box.last + ghost);
+  return grid.window(box.first + ghost, box.last + ghost, owned.first + ghost, owned.last + ghost);
+}
+
+//! The cells shared with each other rank, as entries of the whole-grid cell fields.
+template <int D>
+std::vector<RankOrderSums::Neighbour> cell_neighbours(const std::vector<Patch<D>>& patches,
+                                                      const IVec<D>& cells, int reach, int rank) {
+  std::vector<RankOrderSums::Neighbour> out;
+  for (auto& shared : shared_cells(patches, cells, reach, rank))
+    out.push_back({shared.rank, std::move(shared.indices)});
+  return out;
+}
+
+//! Declare column_names::body_index and fill it: each point's index in its body as built.
+template <int D>
+Column<double> number_points(Particles<D>& points) {
+  const auto index = points.template declare<double>({column_names::body_index, "1", true, false});
+  for (const auto& body : points.bodies)
+    for (long p = body.begin; p < body.end; ++p)
+      points[index][p] = static_cast<double>(p - body.begin);
+  return index;
 }
 
 //! What distributed runs do not take yet, and why.
@@ -72,17 +95,7 @@ void refuse_unsupported(const Simulation<D>& s) {
     throw SetupError(what + " cannot run on more than one rank yet: " + why +
                      "; run it without mpirun (or with -np 1)");
   };
-  for (const auto& body : s.points().bodies) {
-    const Material<D>& m = s.material(body.material);
-    if (m.density_from_cells())
-      refuse("fluid body '" + body.name + "' (density_update from cells)",
-             "its cell densities need the cells other ranks hold");
-  }
-  if (s.contact()) refuse("a contact model", "its body normals need cells other ranks hold");
   if (!s.enclosed().empty()) refuse("a body inside a membrane", "it needs the whole membrane");
-  for (const auto& hook : s.hooks())
-    if (dynamic_cast<const RigidBodies<D>*>(hook.get()))
-      refuse("a rigid body", "its velocity is prescribed from points that other ranks hold");
 }
 
 }  // namespace
@@ -100,6 +113,7 @@ void PatchRun<D>::use_patches(std::vector<Patch<D>> patches, const Grid<D>& wind
   patches_ = std::move(patches);
   halo_.emplace(world_, halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach_, world_.rank()),
                 window);
+  cell_sums_.emplace(world_, cell_neighbours(patches_, window.cells(), reach_, world_.rank()));
   constexpr double kOpen = std::numeric_limits<double>::infinity();
   boxes_.clear();
   for (const auto& p : patches_) {
@@ -130,6 +144,22 @@ void PatchRun<D>::after_scatter(Simulation<D>& simulation, ScatteredFields field
     halo_->complete(grids.field(k), fields);
     doubles_sent_ += halo_->last_doubles_sent();
   }
+  exchange_seconds_ += omp_get_wtime() - start;
+}
+
+template <int D>
+void PatchRun<D>::after_node_marks(Simulation<D>&, std::vector<double>& marks, int components) {
+  const double start = omp_get_wtime();
+  halo_->complete(marks, components);
+  doubles_sent_ += halo_->last_doubles_sent();
+  exchange_seconds_ += omp_get_wtime() - start;
+}
+
+template <int D>
+void PatchRun<D>::after_cell_spread(Simulation<D>&, std::vector<double>& cells) {
+  const double start = omp_get_wtime();
+  cell_sums_->complete({{cells.data(), 1}});
+  doubles_sent_ += cell_sums_->last_doubles_sent();
   exchange_seconds_ += omp_get_wtime() - start;
 }
 
@@ -183,7 +213,7 @@ void PatchRun<D>::rebalance(Simulation<D>& simulation) {
   if (imbalance(patches) > now - 0.5 * limit) return;
   const Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
   use_patches(std::move(patches), window);
-  simulation.use_grid_window(window);
+  simulation.use_grid_window(window, WindowCarrier<D>(grid, window, &world_));
   migrate(simulation);
   simulation.points_changed();
   ++rebalances_;
@@ -217,12 +247,12 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
                      " node layers beyond a cell, more than the grid's ghost layers");
   const Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
-  gather_membrane_frames(world, points);
+  gather_membrane_frames(world, points, number_points(points));
   std::vector<char> keep(points.size());
   for (long p = 0; p < points.size(); ++p)
     keep[p] = hook->owner(points.position[p]) == world.rank();
   keep_points(keep, points);
-  simulation.use_grid_window(window);
+  simulation.use_grid_window(window, WindowCarrier<D>(grid, window, nullptr));
   simulation.points_changed();
   simulation.set_collective(&world);
   const PatchRun<D>& run = *hook;

@@ -2,8 +2,10 @@
 //! A distributed run (DESIGN.md, "Distributed runs"): every rank builds the whole case, then
 //! keeps the points of its patch and the grid window they reach, and a hook completes the
 //! node sums after each scatter (halo_sums.hpp) and moves points that left the patch to its
-//! owner at the end of each step (migration.hpp). Reductions of whole-system quantities go
-//! through the communicator in rank order, so np = 1, 2, 3 … agree to round-off.
+//! owner at the end of each step (migration.hpp). Cell fields (contact's colour functions,
+//! cell densities) are completed like the node sums over the cells patches share; membrane
+//! frames are computed from the whole membrane (gathered_frames.hpp). Reductions of whole-system
+//! quantities go through the communicator in rank order, so np = 1, 2, 3 … agree to round-off.
 
 #include <memory>
 #include <optional>
@@ -25,11 +27,14 @@ class PatchRun final : public StepHook<D> {
            int reach);
 
   void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
+  void after_node_marks(Simulation<D>& simulation, std::vector<double>& marks,
+                        int components) override;
+  void after_cell_spread(Simulation<D>& simulation, std::vector<double>& cells) override;
   void end_of_step(Simulation<D>& simulation) override;
   //! Every few steps the patches are split anew when the ranks' points are out of balance by
   //! more than the run's `rebalance` fraction (SimulationSettings).
   static constexpr long kBalanceCheck = 10;
-  //! distributed.halo_bytes_per_step (all ranks' node shares sent, per step),
+  //! distributed.halo_bytes_per_step (all ranks' node and cell shares sent, per step),
   //! distributed.exchange_seconds_per_step (the slowest rank's time in halo sums and
   //! migration, waiting included), distributed.migrated_points (over the run) and
   //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now) and
@@ -59,6 +64,7 @@ class PatchRun final : public StepHook<D> {
   std::vector<Patch<D>> patches_;
   std::vector<Box> boxes_;
   std::optional<HaloSums<D>> halo_;
+  std::optional<RankOrderSums> cell_sums_;          //!< of the whole-grid cell fields
   std::vector<std::vector<LeavingPoint>> leaving_;  //!< per thread
   double start_imbalance_ = 0.0;
   long points_ = 0;  //!< this rank's, after the last step
@@ -68,8 +74,8 @@ class PatchRun final : public StepHook<D> {
 
 //! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its
 //! patch's points and grid window and gets the PatchRun hook. Throws SetupError, naming the
-//! feature, for what distributed runs do not take yet (contact, rigid bodies, bodies
-//! inside membranes, fluids with cell densities). Returns the hook.
+//! feature, for what distributed runs do not take yet (bodies inside membranes). Returns
+//! the hook.
 template <int D>
 const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world);
 

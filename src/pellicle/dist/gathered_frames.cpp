@@ -49,22 +49,16 @@ void GatheredFrames<D>::estimate(const std::vector<Vec<D>>& position, long begin
 }
 
 template <int D>
-void gather_membrane_frames(const Communicator& world, Particles<D>& points) {
-  Column<double> index;
-  for (auto& body : points.bodies) {
-    if (!body.frames) continue;
-    if (!index.valid())
-      index = points.template declare<double>({kBodyIndexColumn, "1", true, true});
-    std::vector<double>& column = points[index];
-    for (long p = body.begin; p < body.end; ++p) column[p] = static_cast<double>(p - body.begin);
-    body.frames =
-        std::make_shared<GatheredFrames<D>>(world, body.frames, points, index, body.count());
-  }
+void gather_membrane_frames(const Communicator& world, Particles<D>& points, Column<double> index) {
+  for (auto& body : points.bodies)
+    if (body.frames)
+      body.frames =
+          std::make_shared<GatheredFrames<D>>(world, body.frames, points, index, body.count());
 }
 
 template class GatheredFrames<2>;
 template class GatheredFrames<3>;
-template void gather_membrane_frames<2>(const Communicator&, Particles<2>&);
-template void gather_membrane_frames<3>(const Communicator&, Particles<3>&);
+template void gather_membrane_frames<2>(const Communicator&, Particles<2>&, Column<double>);
+template void gather_membrane_frames<3>(const Communicator&, Particles<3>&, Column<double>);
 
 }  // namespace pellicle

@@ -17,9 +17,6 @@
 
 namespace pellicle {
 
-//! The name of the column that holds each point's index in its body as built.
-inline constexpr const char* kBodyIndexColumn = "body_index";
-
 template <int D>
 class GatheredFrames final : public FrameEstimator<D> {
  public:
@@ -40,14 +37,14 @@ class GatheredFrames final : public FrameEstimator<D> {
   std::vector<double> mine_;                         //!< this rank's share, packed
 };
 
-//! Give every membrane body of `points` (built whole on every rank, not yet split) the index
-//! column and a GatheredFrames estimator around its own.
+//! Give every membrane body of `points` (built whole on every rank, not yet split; `index`
+//! its column_names::body_index) a GatheredFrames estimator around its own.
 template <int D>
-void gather_membrane_frames(const Communicator& world, Particles<D>& points);
+void gather_membrane_frames(const Communicator& world, Particles<D>& points, Column<double> index);
 
 extern template class GatheredFrames<2>;
 extern template class GatheredFrames<3>;
-extern template void gather_membrane_frames<2>(const Communicator&, Particles<2>&);
-extern template void gather_membrane_frames<3>(const Communicator&, Particles<3>&);
+extern template void gather_membrane_frames<2>(const Communicator&, Particles<2>&, Column<double>);
+extern template void gather_membrane_frames<3>(const Communicator&, Particles<3>&, Column<double>);
 
 }  // namespace pellicle

@@ -2,6 +2,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -127,15 +128,19 @@ std::vector<std::string> members(hid_t group) {
   return names;
 }
 
-//! The common and declared columns of points [begin, end), in one place for both directions.
+//! The common and declared columns of points from `begin` on, in one place for both
+//! directions (`begin` may be the end: a rank without points of a body).
 template <int D, class Particles, class Visit>
 void for_each_point_array(Particles& p, long begin, Visit&& visit) {
-  visit("position", p.position[begin].data(), D);
-  visit("velocity", p.velocity[begin].data(), D);
-  visit("mass", &p.mass[begin], 1);
-  visit("volume", &p.volume[begin], 1);
-  visit("density", &p.density[begin], 1);
-  visit("stress", p.stress[begin].data(), kSymComponents<D>);
+  auto doubles = [](auto& column) {
+    return reinterpret_cast<decltype(&column[0][0])>(column.data());
+  };
+  visit("position", doubles(p.position) + D * begin, D);
+  visit("velocity", doubles(p.velocity) + D * begin, D);
+  visit("mass", p.mass.data() + begin, 1);
+  visit("volume", p.volume.data() + begin, 1);
+  visit("density", p.density.data() + begin, 1);
+  visit("stress", doubles(p.stress) + kSymComponents<D> * begin, kSymComponents<D>);
   for (int c = 0; c < p.columns.count(); ++c)
     if (p.columns.spec(c).checkpoint) {
       const int k = p.columns.components(c);
@@ -143,11 +148,73 @@ void for_each_point_array(Particles& p, long begin, Visit&& visit) {
     }
 }
 
+//! One body's point array in the order the points were built.
+struct WholeArray {
+  std::string name;
+  int components;
+  std::vector<double> values;
+};
+
+//! A body's point arrays in a distributed run, gathered on rank 0 (empty elsewhere). Each rank
+//! sends its points' rows (the point's index in the body as built, then every array) and
+//! rank 0 puts each row in its place. Collective.
+template <int D>
+std::vector<WholeArray> gather_body(const Particles<D>& p, const BodyInfo<D>& body,
+                                    const Collective& ranks) {
+  std::vector<WholeArray> arrays;
+  std::vector<const double*> sources;
+  int row = 1;
+  for_each_point_array<D>(p, body.begin, [&](const std::string& name, const double* data, int k) {
+    arrays.push_back({name, k, {}});
+    sources.push_back(data);
+    row += k;
+  });
+  const auto& index = p.template named<double>(column_names::body_index);
+  std::vector<double> mine;
+  mine.reserve(body.count() * row);
+  for (long i = 0; i < body.count(); ++i) {
+    mine.push_back(index[body.begin + i]);
+    for (std::size_t a = 0; a < arrays.size(); ++a) {
+      const int k = arrays[a].components;
+      mine.insert(mine.end(), sources[a] + i * k, sources[a] + (i + 1) * k);
+    }
+  }
+  const std::vector<double> all = ranks.gather_to_first(mine);
+  const long count = static_cast<long>(all.size()) / row;
+  for (auto& a : arrays) a.values.resize(count * a.components);
+  for (long r = 0; r < count; ++r) {
+    const double* v = all.data() + r * row;
+    const long i = static_cast<long>(*v++);
+    for (auto& a : arrays) {
+      std::copy_n(v, a.components, a.values.data() + i * a.components);
+      v += a.components;
+    }
+  }
+  return arrays;
+}
+
 }  // namespace
 
 template <int D>
 void write_checkpoint(const std::string& path, const Simulation<D>& s,
-                      const CheckpointHeader& header) {
+                      const CheckpointHeader& header, const NodeCarrier* to_whole_grid) {
+  // A distributed run: rank 0 writes what one process would (points in the order they were
+  // built, node states of the whole grid), so that any number of ranks can continue.
+  const Collective* ranks = s.collective();
+  const auto& p = s.points();
+  std::vector<std::vector<WholeArray>> whole_bodies;
+  std::vector<HookState> hook_states;
+  for (const auto& hook : s.hooks()) hook_states.push_back(hook->save_state());
+  const double max_speed = ranks ? ranks->max(s.max_point_speed()) : s.max_point_speed();
+  if (ranks) {
+    if (!to_whole_grid)
+      throw std::logic_error("a distributed run's checkpoint needs the carrier to the whole grid");
+    for (const auto& body : p.bodies) whole_bodies.push_back(gather_body(p, body, *ranks));
+    for (auto& state : hook_states)
+      for (auto& array : state)
+        if (array.per_node) to_whole_grid->carry(array.values);
+    if (ranks->rank() != 0) return;
+  }
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions with the path
   const std::string temporary = path + ".partial";
   try {
@@ -164,11 +231,10 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
       write_number<double>(file, "time", s.time());
       write_number<long>(file, "step", s.step_count());
       write_number<double>(file, "last_dt", s.last_dt());
-      write_number<double>(file, "max_speed", s.max_point_speed());
+      write_number<double>(file, "max_speed", max_speed);
       write_text(file, "rng",
                  "isosurface frames: one generator per cell, seeded from " +
                      std::to_string(FrameSetup<D>{}.seed));
-      const auto& p = s.points();
       Handle bodies = group(file, "bodies", true);
       for (std::size_t b = 0; b < p.bodies.size(); ++b) {
         const auto& body = p.bodies[b];
@@ -176,18 +242,24 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
         write_text(g, "name", body.name);
         write_number<long>(g, "material", body.material);
         Handle columns = group(g, "columns", true);
-        for_each_point_array<D>(p, body.begin,
-                                [&](const std::string& name, const double* data, int k) {
-                                  write_array(g, name, data, body.count(), k);
-                                });
+        if (ranks)
+          for (const auto& a : whole_bodies[b])
+            write_array(g, a.name, a.values.data(),
+                        static_cast<long>(a.values.size()) / a.components, a.components);
+        else
+          for_each_point_array<D>(p, body.begin,
+                                  [&](const std::string& name, const double* data, int k) {
+                                    write_array(g, name, data, body.count(), k);
+                                  });
       }
       Handle hooks = group(file, "hooks", true);
-      for (const auto& hook : s.hooks()) {
-        const std::string name = hook->state_name();
+      for (std::size_t h = 0; h < s.hooks().size(); ++h) {
+        const std::string name = s.hooks()[h]->state_name();
         if (name.empty()) continue;
         Handle g = group(hooks, name, true);
-        for (const auto& [array, values] : hook->save_state())
-          write_array(g, array, values.data(), static_cast<long>(values.size()), 1);
+        for (const auto& array : hook_states[h])
+          write_array(g, array.name, array.values.data(), static_cast<long>(array.values.size()),
+                      1);
       }
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
     }
@@ -261,7 +333,7 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
         continue;  // a hook the saved run did not have starts fresh
       Handle g = group(file, at, false);
       HookState state;
-      for (const auto& array : members(g)) state.emplace_back(array, read_vector(g, array));
+      for (const auto& array : members(g)) state.push_back({array, read_vector(g, array)});
       hook->load_state(state);
     }
     s.restore_clock(read_number<double>(file, "time"), read_number<long>(file, "step"),
@@ -274,10 +346,10 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
   return added;
 }
 
-template void write_checkpoint<2>(const std::string&, const Simulation<2>&,
-                                  const CheckpointHeader&);
-template void write_checkpoint<3>(const std::string&, const Simulation<3>&,
-                                  const CheckpointHeader&);
+template void write_checkpoint<2>(const std::string&, const Simulation<2>&, const CheckpointHeader&,
+                                  const NodeCarrier*);
+template void write_checkpoint<3>(const std::string&, const Simulation<3>&, const CheckpointHeader&,
+                                  const NodeCarrier*);
 template std::vector<std::string> restore_checkpoint<2>(const std::string&, Simulation<2>&);
 template std::vector<std::string> restore_checkpoint<3>(const std::string&, Simulation<3>&);
 

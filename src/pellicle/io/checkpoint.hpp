@@ -8,6 +8,7 @@
 //!                     volume, density, stress, and columns/<name> for every declared
 //!                     column marked for checkpoints (one row per point)
 //!   /hooks/<name>     the arrays of hooks that carry state (contact-release's node states)
+//! A distributed run's checkpoint is the same file, its points gathered from the ranks.
 //! The frame estimators draw their random points from a generator seeded per cell, so the
 //! run has no random state beyond the seed recorded in `rng`.
 
@@ -31,10 +32,13 @@ struct CheckpointHeader {
 };
 
 //! Write the state of `simulation` to `path` (atomically). Throws std::runtime_error naming
-//! the path when it cannot be written.
+//! the path when it cannot be written. A distributed run's ranks all call it, and rank 0
+//! writes the file one process would: points in the order they were built, and the hooks'
+//! node states brought to the whole grid by `to_whole_grid`. Any number of ranks, one
+//! included, can continue from it.
 template <int D>
 void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
-                      const CheckpointHeader& header);
+                      const CheckpointHeader& header, const NodeCarrier* to_whole_grid = nullptr);
 
 //! Read the header. Throws InputError naming the file when it is not a Pellicle checkpoint.
 CheckpointHeader read_checkpoint_header(const std::string& path);

@@ -139,9 +139,13 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
     simulation.material(p.bodies[b].material).history_from_sums(sums.material_sums(b), values);
     for (double v : values) history_ << ',' << v;
   }
-  if (const auto* forces = simulation.contact_forces())
-    for (const auto& f : *forces)
-      for (int d = 0; d < D; ++d) history_ << ',' << f[d];
+  if (const auto* forces = simulation.contact_forces()) {
+    // Each rank's share is over the nodes it owns.
+    std::vector<double> total;
+    for (const auto& f : *forces) total.insert(total.end(), f.data(), f.data() + D);
+    if (const Collective* ranks = simulation.collective()) ranks->sum_in_rank_order(total);
+    for (double f : total) history_ << ',' << f;
+  }
   for (std::size_t k = 0; k < simulation.enclosed().size(); ++k) {
     const auto& pair = simulation.enclosed()[k];
     const long escaped = escaped_points(p, pair);

@@ -41,12 +41,20 @@ class Probe {
   Probe(const ProbeSpec<D>& spec, const Simulation<D>& simulation);
   //! Column names this probe adds.
   std::vector<std::string> columns() const;
-  //! Current values, in column order.
+  //! Current values, in column order. Collective in a distributed run: the rank that holds a
+  //! probed point (found by its index in the body as built) gives it to the others.
   std::vector<double> values(const Simulation<D>& simulation) const;
 
  private:
+  //! Position and velocity of point `a`, position of point `b`.
+  struct Probed {
+    Vec<D> position_a, velocity_a, position_b;
+  };
+  Probed probed(const Simulation<D>& simulation) const;
+
   ProbeSpec<D> spec_;
-  long a_ = 0, b_ = 0;  //!< global point indices
+  int body_ = 0;
+  long a_ = 0, b_ = 0;  //!< point indices of a whole simulation
 };
 
 extern template class Probe<2>;

@@ -10,11 +10,13 @@ namespace pellicle {
 template <int D>
 void cell_quadratic_density(const Grid<D>& grid, bool axisymmetric,
                             const std::vector<std::pair<long, long>>& ranges,
-                            Particles<D>& points) {
+                            Particles<D>& points,
+                            const std::function<void(std::vector<double>&)>& complete) {
   // Eq 4.6: M_c = Σ_p m_p S(x_c − x_p), S the quadratic B-spline on cell centres.
   std::vector<double> cell_mass(cell_count(grid), 0.0);
   for (const auto& [begin, end] : ranges)
     spread_to_cells(grid, points.position, points.mass, begin, end, cell_mass);
+  complete(cell_mass);
 
   // Eq 4.5: each point takes the density of its cell.
   const double h = grid.cell(), cell_volume = std::pow(h, D);
@@ -34,8 +36,10 @@ void cell_quadratic_density(const Grid<D>& grid, bool axisymmetric,
 }
 
 template void cell_quadratic_density<2>(const Grid<2>&, bool,
-                                        const std::vector<std::pair<long, long>>&, Particles<2>&);
+                                        const std::vector<std::pair<long, long>>&, Particles<2>&,
+                                        const std::function<void(std::vector<double>&)>&);
 template void cell_quadratic_density<3>(const Grid<3>&, bool,
-                                        const std::vector<std::pair<long, long>>&, Particles<3>&);
+                                        const std::vector<std::pair<long, long>>&, Particles<3>&,
+                                        const std::function<void(std::vector<double>&)>&);
 
 }  // namespace pellicle

@@ -5,6 +5,7 @@
 //! alternative to the continuity equation (eq 4.7) for fluids; smoother across a shock than
 //! counting the mass in each cell (docs/theory/gas.md).
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -16,9 +17,11 @@ namespace pellicle {
 //! Set density and volume of the points in `ranges` (each [begin, end)) from the mass of all
 //! of them. Mass spread beyond a wall or symmetry face is reflected back into the domain;
 //! beyond a free face it is lost (the fluid meets vacuum there). `axisymmetric`: cell
-//! volumes are 2π r_c h² and masses are per radian × 2π, as the points' are.
+//! volumes are 2π r_c h² and masses are per radian × 2π, as the points' are. `complete`
+//! completes the cell masses spread from these points (a distributed run's cell sums).
 template <int D>
 void cell_quadratic_density(const Grid<D>& grid, bool axisymmetric,
-                            const std::vector<std::pair<long, long>>& ranges, Particles<D>& points);
+                            const std::vector<std::pair<long, long>>& ranges, Particles<D>& points,
+                            const std::function<void(std::vector<double>&)>& complete);
 
 }  // namespace pellicle

@@ -18,19 +18,24 @@ Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceC
 }
 
 template <int D>
-Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last) const {
+Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last, const IVec<D>& owned_first,
+                        const IVec<D>& owned_last) const {
   for (int d = 0; d < D; ++d)
-    if (first[d] < 0 || last[d] > cells_[d] + 2 * kGhost || last[d] < first[d])
-      throw std::invalid_argument("a grid window must lie within the grid");
+    if (first[d] < 0 || last[d] > cells_[d] + 2 * kGhost || last[d] < first[d] ||
+        owned_first[d] < first[d] || owned_last[d] > last[d])
+      throw std::invalid_argument("a grid window must lie within the grid, its owned nodes within it");
   Grid<D> w = *this;
   w.allocate(first, last - first + IVec<D>::Ones());
+  w.owned_first_ = owned_first;
+  w.owned_last_ = owned_last;
   return w;
 }
 
 template <int D>
 void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
-  first_ = first;
+  first_ = owned_first_ = first;
   nodes_ = count;
+  owned_last_ = first + count - IVec<D>::Ones();
   node_count_ = 1;
   for (int d = 0; d < D; ++d) {
     strides_[d] = node_count_;

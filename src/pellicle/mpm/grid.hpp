@@ -35,8 +35,18 @@ class Grid {
   //! domain and faces, and takes node indices in the whole grid's index space, so a point's
   //! cell units and kernel weights are bitwise those of the whole grid; only the storage and
   //! flat indices are local. The face conditions apply where the window reaches a face. A
-  //! window's window may lie anywhere in the whole grid (a rank's patch moved).
-  Grid window(const IVec<D>& first, const IVec<D>& last) const;
+  //! window's window may lie anywhere in the whole grid (a rank's patch moved). The rank
+  //! owns nodes `owned_first` to `owned_last` (within the window): each node of the whole grid
+  //! is owned by one rank, which alone counts it in sums over the whole grid.
+  Grid window(const IVec<D>& first, const IVec<D>& last, const IVec<D>& owned_first,
+              const IVec<D>& owned_last) const;
+  //! True when this storage counts node `node` in sums over the whole grid: every node of a
+  //! whole grid, the owned nodes of a window.
+  bool owns(long node) const {
+    const IVec<D> index = unflatten(node);
+    return (index.array() >= owned_first_.array()).all() &&
+           (index.array() <= owned_last_.array()).all();
+  }
 
   double cell() const { return h_; }
   const Vec<D>& lower() const { return lower_; }
@@ -138,7 +148,7 @@ class Grid {
 
   Vec<D> lower_, upper_, origin_;
   double h_, inv_h_;
-  IVec<D> cells_, nodes_, first_ = IVec<D>::Zero();
+  IVec<D> cells_, nodes_, first_ = IVec<D>::Zero(), owned_first_, owned_last_;
   std::array<long, D> strides_{};
   long node_count_ = 0;
   FaceConditions<D> faces_;

@@ -42,6 +42,9 @@ inline constexpr const char* internal_energy = "internal_energy";
 //! Kinetic energy per unit mass the transfers removed from a point's motion in its last
 //! to_points (APIC), which thermal models add to e (docs/theory/gas.md).
 inline constexpr const char* transfer_heat = "transfer_heat";
+//! A distributed run's index of each point in its body as built: migration reorders a rank's
+//! points, and membrane frames and probes find points by it.
+inline constexpr const char* body_index = "body_index";
 }  // namespace column_names
 
 template <int D>

@@ -92,9 +92,9 @@ void Simulation<D>::points_changed() {
 }
 
 template <int D>
-void Simulation<D>::use_grid_window(const Grid<D>& window) {
+void Simulation<D>::use_grid_window(const Grid<D>& window, const NodeCarrier& carrier) {
   fields_.replace_grid(window);
-  for (auto& hook : hooks_) hook->grid_replaced();
+  for (auto& hook : hooks_) hook->grid_replaced(carrier);
 }
 
 template <int D>
@@ -303,7 +303,8 @@ void Simulation<D>::settle_cell_densities(double dt) {
   if (first_bad != std::numeric_limits<long>::max())
     fail(first_bad, "non-positive or non-finite density");
   cell_quadratic_density(grid(), settings_.kinematics == Kinematics::axisymmetric,
-                         cell_density_ranges_, points_);
+                         cell_density_ranges_, points_,
+                         [this](std::vector<double>& cells) { complete_cell_sums(cells); });
 }
 
 template <int D>

@@ -95,7 +95,16 @@ class Simulation final : private Stages {
   void set_collective(const Collective* ranks) { collective_ = ranks; }
   const Collective* collective() const { return collective_; }
   //! Store only a window of the grid (Grid::window): a distributed run's patch and halo.
-  void use_grid_window(const Grid<D>& window);
+  //! Hooks carry what they keep per node over with `carrier`.
+  void use_grid_window(const Grid<D>& window, const NodeCarrier& carrier);
+  //! Complete node marks just made from this rank's points (the hooks' after_node_marks).
+  void complete_node_marks(std::vector<double>& marks, int components) {
+    for (auto& hook : hooks_) hook->after_node_marks(*this, marks, components);
+  }
+  //! Complete a cell field just spread from this rank's points (the hooks' after_cell_spread).
+  void complete_cell_sums(std::vector<double>& cells) {
+    for (auto& hook : hooks_) hook->after_cell_spread(*this, cells);
+  }
   //! After points were added, removed or reordered (keeping each body contiguous and the
   //! bodies' ranges up to date): rebuild what the step keeps per point range.
   void points_changed();

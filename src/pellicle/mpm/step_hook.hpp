@@ -13,8 +13,16 @@ namespace pellicle {
 template <int D>
 class Simulation;
 
-//! Named arrays a hook carries from one step to the next (written to checkpoints).
-using HookState = std::vector<std::pair<std::string, std::vector<double>>>;
+//! A named array a hook carries from one step to the next (written to checkpoints).
+struct HookArray {
+  std::string name;
+  std::vector<double> values;
+  //! One value per node of the grid's storage: a distributed run's checkpoint holds the
+  //! whole grid's, from the ranks that own the nodes.
+  bool per_node = false;
+  bool operator==(const HookArray&) const = default;
+};
+using HookState = std::vector<HookArray>;
 
 //! Which grid velocities a hook sees after a grid update: the Lagrangian ones after the
 //! momentum solve (they move the points), or the convected ones of the MUSL remap (they give
@@ -26,6 +34,17 @@ struct ScatteredFields {
   bool mass = false, momentum = false, force = false;
 };
 
+//! Carries per-node values from the grid's old storage to its new one when a distributed
+//! run's window moves: each node of the new window takes the value the rank that owned it
+//! held (zero for a node no rank stored). Collective: every rank calls it alike.
+class NodeCarrier {
+ public:
+  virtual ~NodeCarrier() = default;
+  //! `values`: one per node of the old storage (or empty: zero everywhere); on return one per
+  //! node of the new storage.
+  virtual void carry(std::vector<double>& values) const = 0;
+};
+
 template <int D>
 class StepHook {
  public:
@@ -34,6 +53,15 @@ class StepHook {
   //! remap), before velocities or the centre-of-mass field are derived from the sums: where a
   //! distributed run completes the sums of nodes its neighbours share.
   virtual void after_scatter(Simulation<D>&, ScatteredFields) {}
+  //! Right after a hook marked grid nodes from its points (`components` doubles per node of
+  //! the grid's storage; rigid bodies mark the nodes they touch), before it reads the marks:
+  //! where a distributed run completes the sums of nodes its neighbours share.
+  virtual void after_node_marks(Simulation<D>&, std::vector<double>& /*marks*/,
+                                int /*components*/) {}
+  //! Right after points were spread onto a cell field (mpm/cell_field.hpp: a contact
+  //! model's colour functions, cell densities), before it is read: where a distributed run
+  //! completes the sums of cells its neighbours share.
+  virtual void after_cell_spread(Simulation<D>&, std::vector<double>& /*cells*/) {}
   //! After `to_grid`: mass, momentum and forces are on the grid fields.
   virtual void after_to_grid(Simulation<D>&) {}
   //! After the grid velocities were updated (momentum solve, or the MUSL remap).
@@ -44,8 +72,8 @@ class StepHook {
   //! distributed run moves points that left their patch to its owner.
   virtual void end_of_step(Simulation<D>&) {}
   //! The grid's storage changed (a distributed run's window moved): node indices a hook
-  //! keeps are stale.
-  virtual void grid_replaced() {}
+  //! keeps are stale, and values it keeps per node go to the new storage by `carrier`.
+  virtual void grid_replaced(const NodeCarrier& /*carrier*/) {}
   //! Figures of the run for summary.json ("figures": name → value), asked once at its end on
   //! every rank of a distributed run (so a hook may reduce them over the ranks).
   virtual void summary_figures(std::vector<std::pair<std::string, double>>& /*out*/) const {}

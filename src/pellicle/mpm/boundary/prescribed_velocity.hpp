@@ -26,7 +26,7 @@ class PrescribedVelocity final : public StepHook<D> {
       : lower_(lower), upper_(upper), velocity_(velocity), until_(until) {}
 
   void after_to_grid(Simulation<D>& simulation) override;
-  void grid_replaced() override { nodes_.clear(); }
+  void grid_replaced(const NodeCarrier&) override { nodes_.clear(); }
 
  private:
   Vec<D> lower_, upper_, velocity_;

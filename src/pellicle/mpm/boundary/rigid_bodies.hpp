@@ -26,7 +26,8 @@ class RigidBodies final : public StepHook<D> {
  private:
   std::vector<int> bodies_;
   std::vector<Vec<D>> velocity_;
-  std::vector<long> nodes_;                          //!< work array
+  std::vector<std::vector<long>> touched_;  //!< per rigid body, work array
+  std::vector<double> marks_;  //!< distributed runs: per node and rigid body, work array
   std::vector<std::pair<long, Vec<D>>> prescribed_;  //!< work array
 };
 

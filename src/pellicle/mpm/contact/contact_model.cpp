@@ -6,6 +6,8 @@ namespace pellicle {
 
 template <int D>
 void ContactModel<D>::after_grid_update(Simulation<D>& simulation, GridPass pass, double dt) {
+  // Normals from the colour at the start of the step serve both passes.
+  if (pass == GridPass::lagrangian) shared_.colour_functions(simulation);
   resolve(simulation.fields(), simulation.points(), dt, pass);
 }
 

@@ -57,11 +57,16 @@ class Release final : public ContactModel<D> {
   //! Criterion 9.9 keeps each node's last state: a restart needs it to continue the same way.
   std::string state_name() const override { return "contact-release"; }
   HookState save_state() const override {
-    return {{"node_state", std::vector<double>(released_.begin(), released_.end())}};
+    return {{"node_state", std::vector<double>(released_.begin(), released_.end()), true}};
   }
   void load_state(const HookState& state) override {
-    for (const auto& [name, values] : state)
-      if (name == "node_state") released_.assign(values.begin(), values.end());
+    for (const auto& array : state)
+      if (array.name == "node_state") released_.assign(array.values.begin(), array.values.end());
+  }
+  void grid_replaced(const NodeCarrier& carrier) override {
+    std::vector<double> state(released_.begin(), released_.end());
+    carrier.carry(state);
+    released_.assign(state.begin(), state.end());
   }
 
  private:

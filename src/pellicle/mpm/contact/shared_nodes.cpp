@@ -1,17 +1,22 @@
 #include "pellicle/mpm/contact/shared_nodes.hpp"
 
+#include "pellicle/mpm/simulation.hpp"
+
 namespace pellicle {
 
 template <int D>
-void SharedNodes<D>::colour_functions(const GridFields<D>& fields, const Particles<D>& points) {
+void SharedNodes<D>::colour_functions(Simulation<D>& simulation) {
   // Eq 27 / 9.10 with each point's colour its volume: the colour function is a smoothed
   // volume of its body per cell (its scale does not matter, only its gradient's direction).
+  const GridFields<D>& fields = simulation.fields();
+  const Particles<D>& points = simulation.points();
   colour_.resize(fields.count());
   for (int b = 0; b < fields.count(); ++b) {
     const auto& body = points.bodies[b];
     colour_[b].assign(cell_count(fields.field(b)), 0.0);
     spread_to_cells(fields.field(b), points.position, points.volume, body.begin, body.end,
                     colour_[b]);
+    simulation.complete_cell_sums(colour_[b]);
   }
 }
 

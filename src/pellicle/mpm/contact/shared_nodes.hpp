@@ -66,15 +66,19 @@ class SharedNodes {
   //! Total contact force on each body in the last step (Σ over nodes of m ΔV/Δt).
   const std::vector<Vec<D>>& contact_force() const { return contact_force_; }
 
+  //! Each body's colour function from its points (eq 27 / 9.10), completed by the hooks'
+  //! after_cell_spread: at the start of a step, for both passes' normals.
+  void colour_functions(Simulation<D>& simulation);
+
   //! Apply `rule(SharedNode&)` at every node shared by two or more bodies: it sets the
   //! velocity each body moves with there. The bodies' fields follow, and in the Lagrangian
-  //! pass their FLIP increments and the contact forces.
+  //! pass their FLIP increments and the contact forces (summed over the nodes the grid
+  //! owns, Grid::owns).
   template <class Rule>
   void sweep(GridFields<D>& fields, const Particles<D>& points, double dt, GridPass pass,
              Rule&& rule);
 
  private:
-  void colour_functions(const GridFields<D>& fields, const Particles<D>& points);
   Vec<D> outward_normal(const Grid<D>& grid, int body, long node) const;
 
   std::vector<std::vector<double>> colour_;  //!< per body, on cell centres
@@ -90,8 +94,6 @@ template <class Rule>
 void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, double dt,
                            GridPass pass, Rule&& rule) {
   const bool lagrangian = pass == GridPass::lagrangian;
-  // Normals from the colour at the start of the step serve both passes.
-  if (lagrangian) colour_functions(fields, points);
   const Grid<D>& centre_of_mass = fields.centre_of_mass();
   const int bodies = fields.count();
   grids_.resize(bodies);
@@ -136,12 +138,13 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
       for (int k = 0; k < node.count; ++k)
         node.normal[k] = outward_normal(*grids[node.body[k]], node.body[k], n);
       rule(node);
+      const bool owned = centre_of_mass.owns(n);
       for (int k = 0; k < node.count; ++k) {
         Grid<D>& g = *grids[node.body[k]];
         if (node.in_contact[k]) node.velocity[k] = node.centre_of_mass;
         if (lagrangian) {
           const Vec<D> change = node.velocity[k] - g.velocity[n];
-          force[node.body[k]] += node.mass[k] / dt * change;
+          if (owned) force[node.body[k]] += node.mass[k] / dt * change;
           // FLIP increment: in contact the centre-of-mass field's own, as standard MPM moves
           // the points there (eqs 20–22); otherwise from the body's own velocity before
           // the step, with the rule's correction.
