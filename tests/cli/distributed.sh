@@ -86,9 +86,10 @@ paste -d, <(tail -1 "$work/p1/history.csv") <(tail -1 "$work/p2/history.csv") |
   fail "pendulum probes on two ranks differ from one process"
 
 # Refused before anything runs (exit 2, named, reported once).
-expect 2 "a body inside a membrane cannot run on more than one rank yet" -- \
-  "${run2[@]}" "$cases/fsi_quarter_circle.toml" --out "$work/bag"
-[ "$(grep -c 'cannot run on more than one rank' "$work/err")" = 1 ] || fail "refusal not reported once"
+expect 2 "grid snapshots cannot be written by a run on more than one rank yet" -- \
+  "${run2[@]}" "$cases/two_disks.toml" --out "$work/grid" --set output.grid_snapshots=true
+[ "$(grep -c 'cannot be written by a run on more than one rank' "$work/err")" = 1 ] ||
+  fail "refusal not reported once"
 # A numerical failure stops every rank with exit 3 and says so in the status file.
 expect 3 "CFL number c dt / h" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/fail" \
   --set solver.cfl=0.9 --set solver.cfl_limit=0.1

@@ -39,8 +39,7 @@ class Communicator final : public Collective {
   //! Every rank sends to_rank[r] to rank r and gets what each rank sent it, in from_rank[r].
   void all_to_all(const std::vector<std::vector<double>>& to_rank,
                   std::vector<std::vector<double>>& from_rank) const;
-  //! Every rank's `mine`, joined in rank order, on every rank.
-  std::vector<double> all_gather(const std::vector<double>& mine) const;
+  std::vector<double> all_gather(const std::vector<double>& mine) const override;
   //! Stop every rank of the run with this exit code (a failure one rank found, which the
   //! others, waiting in a collective call, cannot learn of).
   [[noreturn]] void abort(int exit_code) const;

@@ -88,16 +88,6 @@ Column<double> number_points(Particles<D>& points) {
   return index;
 }
 
-//! What distributed runs do not take yet, and why.
-template <int D>
-void refuse_unsupported(const Simulation<D>& s) {
-  auto refuse = [](const std::string& what, const std::string& why) {
-    throw SetupError(what + " cannot run on more than one rank yet: " + why +
-                     "; run it without mpirun (or with -np 1)");
-  };
-  if (!s.enclosed().empty()) refuse("a body inside a membrane", "it needs the whole membrane");
-}
-
 }  // namespace
 
 template <int D>
@@ -237,7 +227,6 @@ void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& o
 
 template <int D>
 const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world) {
-  refuse_unsupported(simulation);
   const Grid<D>& grid = simulation.grid();
   auto& points = simulation.points();
   std::vector<Patch<D>> patches = split(count_points(grid, points.position), world.size());

@@ -73,9 +73,9 @@ class PatchRun final : public StepHook<D> {
 };
 
 //! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its
-//! patch's points and grid window and gets the PatchRun hook. Throws SetupError, naming the
-//! feature, for what distributed runs do not take yet (bodies inside membranes). Returns
-//! the hook.
+//! patch's points and grid window and gets the PatchRun hook. Throws SetupError when the
+//! grid is too small for that many patches or the kernel reaches beyond its ghost layers.
+//! Returns the hook.
 template <int D>
 const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world);
 

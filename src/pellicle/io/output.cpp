@@ -148,10 +148,11 @@ void OutputWriter<D>::write_history_row(const Simulation<D>& simulation) {
   }
   for (std::size_t k = 0; k < simulation.enclosed().size(); ++k) {
     const auto& pair = simulation.enclosed()[k];
-    const long escaped = escaped_points(p, pair);
+    const Collective* ranks = simulation.collective();
+    const long escaped = escaped_points(p, pair, ranks);
     escaped_[k] = std::max(escaped_[k], escaped);
-    history_ << ',' << enclosed_volume(p, pair, simulation.settings().kinematics) << ','
-             << mean_tension(p, pair) << ',' << escaped;
+    history_ << ',' << enclosed_volume(p, pair, simulation.settings().kinematics, ranks) << ','
+             << mean_tension(p, pair, ranks) << ',' << escaped;
   }
   for (const auto& probe : probes_)
     for (double v : probe.values(simulation)) history_ << ',' << v;

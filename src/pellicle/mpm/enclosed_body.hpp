@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pellicle/core/collective.hpp"
 #include "pellicle/geometry/enclosure.hpp"
 #include "pellicle/geometry/membrane_geometry.hpp"
 #include "pellicle/mpm/materials/material.hpp"
@@ -26,17 +27,21 @@ struct EnclosedBody {
 //! membrane, with c on every mirror plane's axis at the plane, so the faces add nothing
 //! (divergence theorem; exact for the polygon or triangle mesh through the points). In
 //! axisymmetric runs 2π ∮ r²/2 dz, the volume of revolution (Pappus).
+//! In a distributed run (`ranks` set) every rank calls these alike and gets the whole pair's
+//! figure: the membrane is gathered in the order its points were built, sums are reduced.
 template <int D>
 double enclosed_volume(const Particles<D>& points, const EnclosedBody<D>& pair,
-                       Kinematics kinematics);
+                       Kinematics kinematics, const Collective* ranks = nullptr);
 
 //! Mean membrane tension: the in-surface stress (2D: t·σ·t; 3D: half the in-surface trace)
 //! times thickness, averaged by mass.
 template <int D>
-double mean_tension(const Particles<D>& points, const EnclosedBody<D>& pair);
+double mean_tension(const Particles<D>& points, const EnclosedBody<D>& pair,
+                    const Collective* ranks = nullptr);
 
 //! Number of the filling body's points outside the membrane now.
 template <int D>
-long escaped_points(const Particles<D>& points, const EnclosedBody<D>& pair);
+long escaped_points(const Particles<D>& points, const EnclosedBody<D>& pair,
+                    const Collective* ranks = nullptr);
 
 }  // namespace pellicle
