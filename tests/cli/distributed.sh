@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `mpirun -np N pellicle run`: exit codes, the files of a distributed run (one history and
-# summary, a .vtu piece per rank joined by a .pvtu that declares the pieces' arrays), and what
-# it refuses. The agreement of the numbers with one process is tests/mpi/.
+# summary, a .vtu piece per rank joined by a .pvtu that declares the pieces' arrays; grid
+# pieces; probes; checkpoints continued on other rank counts), and what it refuses. The
+# agreement of the numbers with one process is tests/mpi/.
 set -u
 mpirun=$1
 pellicle=$2
@@ -85,11 +86,22 @@ paste -d, <(tail -1 "$work/p1/history.csv") <(tail -1 "$work/p2/history.csv") |
   awk -F, '{ n = NF / 2; for (i = n - 2; i <= n; ++i) if (($i - $(i + n)) ^ 2 > (1e-9 * $i) ^ 2) exit 1 }' ||
   fail "pendulum probes on two ranks differ from one process"
 
-# Refused before anything runs (exit 2, named, reported once).
-expect 2 "grid snapshots cannot be written by a run on more than one rank yet" -- \
-  "${run2[@]}" "$cases/two_disks.toml" --out "$work/grid" --set output.grid_snapshots=true
-[ "$(grep -c 'cannot be written by a run on more than one rank' "$work/err")" = 1 ] ||
-  fail "refusal not reported once"
+# Grid snapshots: a piece per rank joined by a .pvti; the pieces' nodes hold what one
+# process's snapshot holds there.
+grid=(--set output.grid_snapshots=true "${short[@]}")
+expect 0 "results" -- "$pellicle" run --quiet "$cases/two_disks.toml" --out "$work/g1" "${grid[@]}"
+expect 0 "results" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/g2" "${grid[@]}"
+grep -q 'file="grid_000003.pvti"' "$work/g2/grid.pvd" || fail "grid.pvd lacks the last .pvti"
+for r in 0000 0001; do
+  grep -q "Source=\"grid_000003_r$r.vti\"" "$work/g2/grid_000003.pvti" || fail "no grid piece r$r"
+done
+/usr/bin/python3 "$(dirname "$0")/compare_grid_pieces.py" "$work/g1/grid_000003.vti" \
+  "$work"/g2/grid_000003_r*.vti || fail "grid pieces differ from one process"
+
+# Refused before anything runs (exit 2, named, reported once): a grid too small to split.
+expect 2 "cannot split 4 x 4 cells among 2 ranks" -- \
+  "${run2[@]}" "$cases/two_disks.toml" --out "$work/small" --set grid.cell=0.25
+[ "$(grep -c 'cannot split' "$work/err")" = 1 ] || fail "refusal not reported once"
 # A numerical failure stops every rank with exit 3 and says so in the status file.
 expect 3 "CFL number c dt / h" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/fail" \
   --set solver.cfl=0.9 --set solver.cfl_limit=0.1

@@ -44,15 +44,6 @@ int world_size(const RunOptions& o) {
   return 1;
 }
 
-//! What a distributed run does not write yet, refused before anything runs.
-template <int D>
-void refuse_distributed_outputs(const Case<D>& c) {
-  const SourceLocation where{c.file, 0, 0};
-  if (c.output.grid_snapshots)
-    throw InputError(where, "output.grid_snapshots",
-                     "grid snapshots cannot be written by a run on more than one rank yet");
-}
-
 const char* kinematics_name(Kinematics k) {
   switch (k) {
     case Kinematics::plane_strain:
@@ -185,7 +176,6 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   const long total_points = simulation->point_count();
 #ifdef PELLICLE_WITH_MPI
   if (distributed) {
-    refuse_distributed_outputs(c);
     try {
       distribute(*simulation, *o.world);
     } catch (const SetupError& e) {

@@ -138,9 +138,9 @@ void PatchRun<D>::after_scatter(Simulation<D>& simulation, ScatteredFields field
 }
 
 template <int D>
-void PatchRun<D>::after_node_marks(Simulation<D>&, std::vector<double>& marks, int components) {
+void PatchRun<D>::after_node_sums(const std::vector<NodeArray>& arrays) {
   const double start = omp_get_wtime();
-  halo_->complete(marks, components);
+  halo_->complete(arrays);
   doubles_sent_ += halo_->last_doubles_sent();
   exchange_seconds_ += omp_get_wtime() - start;
 }

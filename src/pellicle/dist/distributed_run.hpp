@@ -27,8 +27,7 @@ class PatchRun final : public StepHook<D> {
            int reach);
 
   void after_scatter(Simulation<D>& simulation, ScatteredFields fields) override;
-  void after_node_marks(Simulation<D>& simulation, std::vector<double>& marks,
-                        int components) override;
+  void after_node_sums(const std::vector<NodeArray>& arrays) override;
   void after_cell_spread(Simulation<D>& simulation, std::vector<double>& cells) override;
   void end_of_step(Simulation<D>& simulation) override;
   //! Every few steps the patches are split anew when the ranks' points are out of balance by

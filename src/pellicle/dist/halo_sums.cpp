@@ -46,8 +46,10 @@ void HaloSums<D>::complete(Grid<D>& grid, ScatteredFields fields) {
 }
 
 template <int D>
-void HaloSums<D>::complete(std::vector<double>& values, int components) {
-  sums_.complete({{values.data(), components}});
+void HaloSums<D>::complete(const std::vector<NodeArray>& arrays) {
+  arrays_.clear();
+  for (const auto& a : arrays) arrays_.push_back({a.data, a.components});
+  sums_.complete(arrays_);
 }
 
 template class HaloSums<2>;

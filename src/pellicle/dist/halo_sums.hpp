@@ -22,8 +22,8 @@ class HaloSums {
 
   //! Complete the sums of the fields just scattered onto `grid` (a copy of the window).
   void complete(Grid<D>& grid, ScatteredFields fields);
-  //! Complete the sums of `values`, `components` doubles per node of the window.
-  void complete(std::vector<double>& values, int components);
+  //! Complete the sums of node arrays of the window.
+  void complete(const std::vector<NodeArray>& arrays);
   //! Doubles this rank sent in the last complete().
   long last_doubles_sent() const { return sums_.last_doubles_sent(); }
 

@@ -183,16 +183,54 @@ void OutputWriter<D>::write_snapshot(const Simulation<D>& simulation) {
   }
   if (rank_ == 0) points_series_.add(simulation.time(), name);
   if (settings_.grid_snapshots) {
-    std::snprintf(name, sizeof name, "grid_%06d.vti", snapshots_);
-    write_grid_vti<D>(settings_.directory + "/" + name, simulation.grid(),
-                      projection_.project(simulation));
-    grid_series_.add(simulation.time(), name);
+    const Grid<D>& grid = simulation.grid();
+    const NodeStresses<D>& stresses = projection_.project(simulation);
+    if (ranks_ == 1) {
+      std::snprintf(name, sizeof name, "grid_%06d.vti", snapshots_);
+      write_grid_vti<D>(settings_.directory + "/" + name, grid, stresses);
+    } else {
+      write_grid_pieces(simulation, stresses, name, sizeof name);
+    }
+    if (rank_ == 0) grid_series_.add(simulation.time(), name);
   }
   ++snapshots_;
   last_snapshot_step_ = simulation.step_count();
   next_snapshot_ = settings_.snapshot_interval > 0.0
                        ? simulation.time() + settings_.snapshot_interval
                        : std::numeric_limits<double>::infinity();
+}
+
+template <int D>
+void OutputWriter<D>::write_grid_pieces(const Simulation<D>& simulation,
+                                        const NodeStresses<D>& stresses, char* name,
+                                        std::size_t size) {
+  // Each rank writes the nodes it owns and, across a cut, the layer of nodes its upper
+  // neighbour owns, so that the pieces meet without gaps (VTK pieces share their faces).
+  const Grid<D>& grid = simulation.grid();
+  const IVec<D> stored_last = grid.first() + grid.nodes() - IVec<D>::Ones();
+  const IVec<D> first = grid.owned_first();
+  const IVec<D> last = (grid.owned_last() + IVec<D>::Ones()).cwiseMin(stored_last);
+  std::snprintf(name, size, "grid_%06d_r%04d.vti", snapshots_, rank_);
+  write_grid_vti<D>(settings_.directory + "/" + name, grid, stresses, first, last);
+  std::vector<double> mine;
+  for (int d = 0; d < D; ++d) mine.push_back(first[d]);
+  for (int d = 0; d < D; ++d) mine.push_back(last[d]);
+  const std::vector<double> boxes = simulation.collective()->all_gather(mine);
+  std::vector<std::string> pieces;
+  std::vector<IVec<D>> firsts, lasts;
+  for (int r = 0; r < ranks_; ++r) {
+    std::snprintf(name, size, "grid_%06d_r%04d.vti", snapshots_, r);
+    pieces.push_back(name);
+    IVec<D> f, l;
+    for (int d = 0; d < D; ++d) {
+      f[d] = static_cast<int>(boxes[2 * D * r + d]);
+      l[d] = static_cast<int>(boxes[2 * D * r + D + d]);
+    }
+    firsts.push_back(f);
+    lasts.push_back(l);
+  }
+  std::snprintf(name, size, "grid_%06d.pvti", snapshots_);
+  if (rank_ == 0) write_grid_pvti<D>(settings_.directory + "/" + name, grid, pieces, firsts, lasts);
 }
 
 template <int D>

@@ -39,6 +39,10 @@ class OutputWriter final : public StepObserver<D> {
  private:
   void write_history_row(const Simulation<D>& simulation);
   void write_snapshot(const Simulation<D>& simulation);
+  //! A distributed run's grid snapshot: this rank's piece, and on rank 0 the .pvti that joins
+  //! them (its name left in `name`).
+  void write_grid_pieces(const Simulation<D>& simulation, const NodeStresses<D>& stresses,
+                         char* name, std::size_t size);
 
   OutputSettings settings_;
   std::vector<Probe<D>> probes_;

@@ -235,28 +235,91 @@ void write_points_pvtu(const std::string& path, const Simulation<D>& simulation,
   write_file_atomically(path, out);
 }
 
+namespace {
+
+//! The VTK extent "i0 i1 j0 j1 k0 k1" of nodes first to last.
 template <int D>
-void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses) {
-  const IVec<D> n = grid.nodes();
+std::string extent(const IVec<D>& first, const IVec<D>& last) {
+  std::ostringstream e;
+  for (int d = 0; d < 3; ++d)
+    e << (d ? " " : "") << (d < D ? first[d] : 0) << ' ' << (d < D ? last[d] : 0);
+  return e.str();
+}
+
+//! The image's placement: grid index 0 at the origin, one cell per index.
+template <int D>
+std::string origin_and_spacing(const Grid<D>& grid) {
+  std::ostringstream out;
+  out.precision(17);
   const Vec<D> origin = grid.node_position(IVec<D>::Zero());
-  std::ostringstream head;
-  head.precision(17);
-  head << "<?xml version=\"1.0\"?>\n"
-       << "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-          "header_type=\"UInt64\">\n";
-  head << "<ImageData WholeExtent=\"0 " << n[0] - 1 << " 0 " << n[1] - 1 << " 0 "
-       << (D == 3 ? n[D - 1] - 1 : 0) << "\" Origin=\"" << origin[0] << ' ' << origin[1] << ' '
-       << (D == 3 ? origin[D - 1] : 0.0) << "\" Spacing=\"" << grid.cell() << ' ' << grid.cell()
-       << ' ' << grid.cell() << "\">\n";
-  head << "<Piece Extent=\"0 " << n[0] - 1 << " 0 " << n[1] - 1 << " 0 "
-       << (D == 3 ? n[D - 1] - 1 : 0) << "\">\n<PointData Scalars=\"mass\" Vectors=\"velocity\">\n";
-  std::string out = head.str();
-  data_array(out, "Float64", "mass", 1, grid.mass);
-  data_array(out, "Float64", "velocity", 3, as_xyz<D>(grid.velocity));
-  data_array(out, "Float64", "pressure", 1, stresses.pressure);
-  data_array(out, "Float64", "stress", 6, as_paraview_tensor<D>(stresses.stress));
-  data_array(out, "Float64", "membrane_stress", 6, as_paraview_tensor<D>(stresses.membrane_stress));
+  out << "Origin=\"" << origin[0] << ' ' << origin[1] << ' ' << (D == 3 ? origin[D - 1] : 0.0)
+      << "\" Spacing=\"" << grid.cell() << ' ' << grid.cell() << ' ' << grid.cell() << '"';
+  return out.str();
+}
+
+//! Values of the stored nodes first to last, axis 0 fastest.
+template <int D, class T>
+std::vector<T> node_box(const Grid<D>& grid, const std::vector<T>& values, const IVec<D>& first,
+                        const IVec<D>& last) {
+  std::vector<T> out;
+  IVec<D> c = first;
+  while (true) {
+    out.push_back(values[grid.flatten(c)]);
+    int d = 0;
+    while (d < D && ++c[d] > last[d]) c[d] = first[d], ++d;
+    if (d == D) break;
+  }
+  return out;
+}
+
+}  // namespace
+
+template <int D>
+void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses,
+                    const IVec<D>& first, const IVec<D>& last) {
+  const std::string e = extent<D>(first, last);
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n<ImageData WholeExtent=\"" +
+      e + "\" " + origin_and_spacing(grid) + ">\n<Piece Extent=\"" + e +
+      "\">\n<PointData Scalars=\"mass\" Vectors=\"velocity\">\n";
+  auto box = [&](const auto& values) { return node_box<D>(grid, values, first, last); };
+  data_array(out, "Float64", "mass", 1, box(grid.mass));
+  data_array(out, "Float64", "velocity", 3, as_xyz<D>(box(grid.velocity)));
+  data_array(out, "Float64", "pressure", 1, box(stresses.pressure));
+  data_array(out, "Float64", "stress", 6, as_paraview_tensor<D>(box(stresses.stress)));
+  data_array(out, "Float64", "membrane_stress", 6,
+             as_paraview_tensor<D>(box(stresses.membrane_stress)));
   out += "</PointData>\n<CellData>\n</CellData>\n</Piece>\n</ImageData>\n</VTKFile>\n";
+  write_file_atomically(path, out);
+}
+
+template <int D>
+void write_grid_pvti(const std::string& path, const Grid<D>& grid,
+                     const std::vector<std::string>& pieces, const std::vector<IVec<D>>& first,
+                     const std::vector<IVec<D>>& last) {
+  IVec<D> lowest = first.front(), highest = last.front();
+  for (std::size_t r = 1; r < pieces.size(); ++r)
+    lowest = lowest.cwiseMin(first[r]), highest = highest.cwiseMax(last[r]);
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n<PImageData WholeExtent=\"" +
+      extent<D>(lowest, highest) + "\" GhostLevel=\"0\" " + origin_and_spacing(grid) +
+      ">\n<PPointData Scalars=\"mass\" Vectors=\"velocity\">\n";
+  for (const auto& [name, components] : {std::pair<const char*, int>{"mass", 1},
+                                         {"velocity", 3},
+                                         {"pressure", 1},
+                                         {"stress", 6},
+                                         {"membrane_stress", 6}})
+    out += "<PDataArray type=\"Float64\" Name=\"" + std::string(name) + "\" NumberOfComponents=\"" +
+           std::to_string(components) + "\"/>\n";
+  out += "</PPointData>\n";
+  for (std::size_t r = 0; r < pieces.size(); ++r)
+    out +=
+        "<Piece Extent=\"" + extent<D>(first[r], last[r]) + "\" Source=\"" + pieces[r] + "\"/>\n";
+  out += "</PImageData>\n</VTKFile>\n";
   write_file_atomically(path, out);
 }
 
@@ -278,7 +341,15 @@ template void write_points_pvtu<2>(const std::string&, const Simulation<2>&,
                                    const std::vector<std::string>&);
 template void write_points_pvtu<3>(const std::string&, const Simulation<3>&,
                                    const std::vector<std::string>&);
-template void write_grid_vti<2>(const std::string&, const Grid<2>&, const NodeStresses<2>&);
-template void write_grid_vti<3>(const std::string&, const Grid<3>&, const NodeStresses<3>&);
+template void write_grid_vti<2>(const std::string&, const Grid<2>&, const NodeStresses<2>&,
+                                const IVec<2>&, const IVec<2>&);
+template void write_grid_vti<3>(const std::string&, const Grid<3>&, const NodeStresses<3>&,
+                                const IVec<3>&, const IVec<3>&);
+template void write_grid_pvti<2>(const std::string&, const Grid<2>&,
+                                 const std::vector<std::string>&, const std::vector<IVec<2>>&,
+                                 const std::vector<IVec<2>>&);
+template void write_grid_pvti<3>(const std::string&, const Grid<3>&,
+                                 const std::vector<std::string>&, const std::vector<IVec<3>>&,
+                                 const std::vector<IVec<3>>&);
 
 }  // namespace pellicle

@@ -28,8 +28,24 @@ void write_points_pvtu(const std::string& path, const Simulation<D>& simulation,
 //! Grid snapshot on the node lattice (ghost layers included): nodal mass and velocity, and
 //! the point stresses projected onto the nodes (grid_projection.hpp): `pressure`, `stress`
 //! and `membrane_stress`, tensors as ParaView's 6-component symmetric tensors.
+//! The nodes `first` to `last` (grid indices; default all stored) in the grid's index space,
+//! so a distributed run's pieces fit together.
 template <int D>
-void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses);
+void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses,
+                    const IVec<D>& first, const IVec<D>& last);
+template <int D>
+void write_grid_vti(const std::string& path, const Grid<D>& grid, const NodeStresses<D>& stresses) {
+  const IVec<D> last = grid.first() + grid.nodes() - IVec<D>::Ones();
+  write_grid_vti<D>(path, grid, stresses, grid.first(), last);
+}
+
+//! A distributed run's grid snapshot: the file that joins the ranks' pieces (each a
+//! write_grid_vti of that rank's nodes, piece r's nodes `first[r]` to `last[r]`, named
+//! relative to the .pvti) and declares their arrays.
+template <int D>
+void write_grid_pvti(const std::string& path, const Grid<D>& grid,
+                     const std::vector<std::string>& pieces, const std::vector<IVec<D>>& first,
+                     const std::vector<IVec<D>>& last);
 
 //! A time series of files for ParaView.
 class PvdCollection {

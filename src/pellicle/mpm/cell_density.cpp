@@ -9,8 +9,7 @@ namespace pellicle {
 
 template <int D>
 void cell_quadratic_density(const Grid<D>& grid, bool axisymmetric,
-                            const std::vector<std::pair<long, long>>& ranges,
-                            Particles<D>& points,
+                            const std::vector<std::pair<long, long>>& ranges, Particles<D>& points,
                             const std::function<void(std::vector<double>&)>& complete) {
   // Eq 4.6: M_c = Σ_p m_p S(x_c − x_p), S the quadratic B-spline on cell centres.
   std::vector<double> cell_mass(cell_count(grid), 0.0);

@@ -23,7 +23,8 @@ Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last, const IVec<D>
   for (int d = 0; d < D; ++d)
     if (first[d] < 0 || last[d] > cells_[d] + 2 * kGhost || last[d] < first[d] ||
         owned_first[d] < first[d] || owned_last[d] > last[d])
-      throw std::invalid_argument("a grid window must lie within the grid, its owned nodes within it");
+      throw std::invalid_argument(
+          "a grid window must lie within the grid, its owned nodes within it");
   Grid<D> w = *this;
   w.allocate(first, last - first + IVec<D>::Ones());
   w.owned_first_ = owned_first;

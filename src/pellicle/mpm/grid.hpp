@@ -54,6 +54,11 @@ class Grid {
   const IVec<D>& cells() const { return cells_; }  //!< cells across the domain per axis
   const IVec<D>& nodes() const { return nodes_; }  //!< nodes per axis stored (ghosts included)
   long node_count() const { return node_count_; }
+  //! Grid index of the first stored node (nonzero in a window).
+  const IVec<D>& first() const { return first_; }
+  //! The nodes this storage counts in sums over the whole grid (owns()), as a box.
+  const IVec<D>& owned_first() const { return owned_first_; }
+  const IVec<D>& owned_last() const { return owned_last_; }
   //! Position of node (i, j[, k]) given in grid index space (ghosts included).
   Vec<D> node_position(const IVec<D>& index) const {
     return origin_ + h_ * index.template cast<double>();

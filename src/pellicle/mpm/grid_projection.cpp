@@ -85,20 +85,32 @@ const NodeStresses<D>& GridProjection<D>::project(const Simulation<D>& simulatio
     }
   }
 
-  // Add the other threads' sums to thread 0's (in thread order), then divide by the masses.
+  // Add the other threads' sums to thread 0's (in thread order), complete the sums of nodes
+  // other ranks share (a distributed run), then divide by the masses.
   Sums& total = sums_[0];
   NodeStresses<D>& mean = total.fields;
+  if (sums_.size() > 1) {
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < nodes; ++i) {
+      for (std::size_t t = 1; t < sums_.size(); ++t) {
+        const Sums& s = sums_[t];
+        total.mass[i] += s.mass[i];
+        total.fluid_mass[i] += s.fluid_mass[i];
+        total.membrane_mass[i] += s.membrane_mass[i];
+        mean.pressure[i] += s.fields.pressure[i];
+        mean.stress[i] += s.fields.stress[i];
+        mean.membrane_stress[i] += s.fields.membrane_stress[i];
+      }
+    }
+  }
+  simulation.complete_node_sums({{total.mass.data(), 1},
+                                 {total.fluid_mass.data(), 1},
+                                 {total.membrane_mass.data(), 1},
+                                 {mean.pressure.data(), 1},
+                                 {mean.stress.data()->data(), kSymComponents<D>},
+                                 {mean.membrane_stress.data()->data(), kSymComponents<D>}});
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < nodes; ++i) {
-    for (std::size_t t = 1; t < sums_.size(); ++t) {
-      const Sums& s = sums_[t];
-      total.mass[i] += s.mass[i];
-      total.fluid_mass[i] += s.fluid_mass[i];
-      total.membrane_mass[i] += s.membrane_mass[i];
-      mean.pressure[i] += s.fields.pressure[i];
-      mean.stress[i] += s.fields.stress[i];
-      mean.membrane_stress[i] += s.fields.membrane_stress[i];
-    }
     if (total.mass[i] > 0.0) mean.stress[i] /= total.mass[i];
     if (total.fluid_mass[i] > 0.0) mean.pressure[i] /= total.fluid_mass[i];
     if (total.membrane_mass[i] > 0.0) mean.membrane_stress[i] /= total.membrane_mass[i];

@@ -97,9 +97,9 @@ class Simulation final : private Stages {
   //! Store only a window of the grid (Grid::window): a distributed run's patch and halo.
   //! Hooks carry what they keep per node over with `carrier`.
   void use_grid_window(const Grid<D>& window, const NodeCarrier& carrier);
-  //! Complete node marks just made from this rank's points (the hooks' after_node_marks).
-  void complete_node_marks(std::vector<double>& marks, int components) {
-    for (auto& hook : hooks_) hook->after_node_marks(*this, marks, components);
+  //! Complete node sums just made from this rank's points (the hooks' after_node_sums).
+  void complete_node_sums(const std::vector<NodeArray>& arrays) const {
+    for (const auto& hook : hooks_) hook->after_node_sums(arrays);
   }
   //! Complete a cell field just spread from this rank's points (the hooks' after_cell_spread).
   void complete_cell_sums(std::vector<double>& cells) {

@@ -34,6 +34,13 @@ struct ScatteredFields {
   bool mass = false, momentum = false, force = false;
 };
 
+//! An array of `components` doubles per node of the grid's storage, node n at
+//! data[n * components].
+struct NodeArray {
+  double* data;
+  int components;
+};
+
 //! Carries per-node values from the grid's old storage to its new one when a distributed
 //! run's window moves: each node of the new window takes the value the rank that owned it
 //! held (zero for a node no rank stored). Collective: every rank calls it alike.
@@ -53,11 +60,11 @@ class StepHook {
   //! remap), before velocities or the centre-of-mass field are derived from the sums: where a
   //! distributed run completes the sums of nodes its neighbours share.
   virtual void after_scatter(Simulation<D>&, ScatteredFields) {}
-  //! Right after a hook marked grid nodes from its points (`components` doubles per node of
-  //! the grid's storage; rigid bodies mark the nodes they touch), before it reads the marks:
-  //! where a distributed run completes the sums of nodes its neighbours share.
-  virtual void after_node_marks(Simulation<D>&, std::vector<double>& /*marks*/,
-                                int /*components*/) {}
+  //! Right after values of this rank's points were summed onto grid nodes outside the step's
+  //! scatters (rigid bodies' marks of the nodes they touch, the projections of grid
+  //! snapshots), before they are read: where a distributed run completes the sums of nodes
+  //! its neighbours share.
+  virtual void after_node_sums(const std::vector<NodeArray>& /*arrays*/) {}
   //! Right after points were spread onto a cell field (mpm/cell_field.hpp: a contact
   //! model's colour functions, cell densities), before it is read: where a distributed run
   //! completes the sums of cells its neighbours share.

@@ -24,7 +24,7 @@ void RigidBodies<D>::after_to_grid(Simulation<D>& simulation) {
       for (long n : touched[r]) marks_[n * rigid + r] = 1.0;
   }
   if (distributed) {
-    simulation.complete_node_marks(marks_, rigid);
+    simulation.complete_node_sums({{marks_.data(), rigid}});
     for (int r = 0; r < rigid; ++r) {
       touched[r].clear();
       for (long n = 0; n * rigid < static_cast<long>(marks_.size()); ++n)
