@@ -106,6 +106,12 @@ expect 2 "cannot split 4 x 4 cells among 2 ranks" -- \
 expect 3 "CFL number c dt / h" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/fail" \
   --set solver.cfl=0.9 --set solver.cfl_limit=0.1
 grep -q '^failed' "$work/fail/status" || fail "status of a failed distributed run is not 'failed'"
+# A failing point is named as one process names it (its index in the body as built).
+unstable=(--set solver.dt=0.01 --set solver.cfl_limit=1000)
+expect 3 "body 'left-bar', point 16: the point left the grid domain" -- \
+  "$pellicle" run --quiet "$cases/two_bars_stick.toml" --out "$work/f1" "${unstable[@]}"
+expect 3 "body 'left-bar', point 16: the point left the grid domain" -- \
+  "${run2[@]}" "$cases/two_bars_stick.toml" --out "$work/f2" "${unstable[@]}"
 
 [ "$failures" -eq 0 ] && echo "all distributed CLI checks passed"
 exit "$failures"

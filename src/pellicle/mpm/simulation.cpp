@@ -464,7 +464,9 @@ void Simulation<D>::fail(long point, const std::string& what) const {
   if (point >= 0) {
     const auto& body = points_.bodies[points_.body[point]];
     c.body = body.name;
-    c.point = point - body.begin;
+    // A distributed run's points carry their index in the body as built.
+    const Column<double> built = points_.columns.template find<double>(column_names::body_index);
+    c.point = built.valid() ? static_cast<long>(points_[built][point]) : point - body.begin;
   }
   throw NumericalError(c, what);
 }
