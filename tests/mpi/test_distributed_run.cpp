@@ -159,6 +159,16 @@ void expect_agreement(const Agreement& a) {
   EXPECT_LE(a.enclosed, kTolerance);
 }
 
+//! On more than one rank, the run split its patches anew at least once.
+void expect_rebalanced(const Agreement& a) {
+  double rebalances = -1.0;
+  for (const auto& [name, value] : a.figures)
+    if (name == "distributed.rebalances") rebalances = value;
+  if (world->size() > 1) {
+    EXPECT_GT(rebalances, 0.0);
+  }
+}
+
 TEST(DistributedRun, TwoDisksThroughTheirCollisionAgreeWithOneProcess) {
   // The disks touch near t = 1.6 s; a cell twice the case's keeps the run short.
   const Agreement a =
@@ -180,12 +190,7 @@ TEST(DistributedRun, SodSplitAnewAsTheGasMovesAgreesWithOneProcess) {
   // soon as a few points have moved: new windows, new shared nodes, points sent across.
   const Agreement a = compare_runs<2>("sod_shock_tube.toml", {"solver.rebalance=0.001"}, 1500);
   expect_agreement(a);
-  double rebalances = -1.0;
-  for (const auto& [name, value] : a.figures)
-    if (name == "distributed.rebalances") rebalances = value;
-  if (world->size() > 1) {
-    EXPECT_GT(rebalances, 0.0);
-  }
+  expect_rebalanced(a);
 }
 
 TEST(DistributedRun, SodShockTubeAgreesWithOneProcess) {
@@ -220,12 +225,7 @@ TEST(DistributedRun, TwoBarsWithReleaseSplitAnewAgreeWithOneProcess) {
                        "contact={model=\"release\", criterion=\"both\"}"},
                       6000);
   expect_agreement(a);
-  double rebalances = -1.0;
-  for (const auto& [name, value] : a.figures)
-    if (name == "distributed.rebalances") rebalances = value;
-  if (world->size() > 1) {
-    EXPECT_GT(rebalances, 0.0);
-  }
+  expect_rebalanced(a);
 }
 
 TEST(DistributedRun, PlatePulledByARigidGripAgreesWithOneProcess) {
