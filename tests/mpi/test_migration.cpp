@@ -44,14 +44,24 @@ TEST(Migration, EveryPointArrivesOnceWithItsColumnsInItsBody) {
   }
   const std::vector<double> before = body_totals(p);
 
+  // Every other round the ranks are a chain: each has the ranks beside it as neighbours,
+  // and the points go to them (counts between neighbours only), except every fourth such
+  // round, when they go anywhere (every rank falls back to the all-to-all).
+  std::vector<int> chain, near = {me};
+  for (int r : {me - 1, me + 1})
+    if (r >= 0 && r < world->size()) chain.push_back(r), near.push_back(r);
   std::mt19937 random(12345u + me);
   for (int round = 0; round < 60; ++round) {
     std::vector<LeavingPoint> leaving;
     const double share = (round % 4) / 3.0;  // none, a third, two thirds, all
+    const bool neighbours = round % 2 == 1, anywhere = round % 8 == 7;
     for (long i = 0; i < p.size(); ++i)
-      if (std::uniform_real_distribution<double>(0.0, 1.0)(random) < share)
-        leaving.push_back({i, static_cast<int>(random() % world->size())});
-    migrate_points(*world, leaving, p);
+      if (std::uniform_real_distribution<double>(0.0, 1.0)(random) < share) {
+        const int rank = neighbours && !anywhere ? near[random() % near.size()]
+                                                 : static_cast<int>(random() % world->size());
+        leaving.push_back({i, rank});
+      }
+    migrate_points(*world, leaving, p, neighbours ? &chain : nullptr);
     long expected_begin = 0;
     for (std::size_t b = 0; b < p.bodies.size(); ++b) {
       EXPECT_EQ(p.bodies[b].begin, expected_begin);

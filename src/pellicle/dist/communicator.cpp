@@ -65,20 +65,53 @@ void Communicator::exchange(const std::vector<Message>& outgoing,
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 }
 
+namespace {
+
+//! Send each non-empty to_rank[r] and receive from each rank r with counts[r] > 0.
+void send_payloads(const Communicator& world, const std::vector<std::vector<double>>& to_rank,
+                   const std::vector<int>& receive_counts,
+                   std::vector<std::vector<double>>& from_rank) {
+  std::vector<Communicator::Message> outgoing, incoming;
+  for (int r = 0; r < world.size(); ++r) {
+    if (!to_rank[r].empty()) outgoing.push_back({r, to_rank[r]});
+    if (receive_counts[r] > 0) incoming.push_back({r, std::vector<double>(receive_counts[r])});
+  }
+  world.exchange(outgoing, incoming);
+  from_rank.assign(world.size(), {});
+  for (auto& in : incoming) from_rank[in.rank] = std::move(in.values);
+}
+
+}  // namespace
+
 void Communicator::all_to_all(const std::vector<std::vector<double>>& to_rank,
                               std::vector<std::vector<double>>& from_rank) const {
   std::vector<int> send_counts(size_), receive_counts(size_);
   for (int r = 0; r < size_; ++r) send_counts[r] = static_cast<int>(to_rank[r].size());
   MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
   // Then only the ranks that have something to say talk (mostly none, or a neighbour).
+  send_payloads(*this, to_rank, receive_counts, from_rank);
+}
+
+void Communicator::neighbour_all_to_all(const std::vector<std::vector<double>>& to_rank,
+                                        std::vector<std::vector<double>>& from_rank,
+                                        const std::vector<int>& neighbours) const {
+  std::vector<char> near(size_, 0);
+  for (int r : neighbours) near[r] = 1;
+  near[rank_] = 1;
+  double beyond = 0.0;
+  for (int r = 0; r < size_; ++r)
+    if (!to_rank[r].empty() && !near[r]) beyond = 1.0;
+  if (max(beyond) > 0.0) return all_to_all(to_rank, from_rank);
   std::vector<Message> outgoing, incoming;
-  for (int r = 0; r < size_; ++r) {
-    if (send_counts[r] > 0) outgoing.push_back({r, to_rank[r]});
-    if (receive_counts[r] > 0) incoming.push_back({r, std::vector<double>(receive_counts[r])});
+  for (int r : neighbours) {
+    outgoing.push_back({r, {static_cast<double>(to_rank[r].size())}});
+    incoming.push_back({r, std::vector<double>(1)});
   }
   exchange(outgoing, incoming);
-  from_rank.assign(size_, {});
-  for (auto& in : incoming) from_rank[in.rank] = std::move(in.values);
+  std::vector<int> receive_counts(size_, 0);
+  receive_counts[rank_] = static_cast<int>(to_rank[rank_].size());
+  for (const auto& in : incoming) receive_counts[in.rank] = static_cast<int>(in.values[0]);
+  send_payloads(*this, to_rank, receive_counts, from_rank);
 }
 
 std::vector<double> Communicator::all_gather(const std::vector<double>& mine) const {

@@ -39,6 +39,13 @@ class Communicator final : public Collective {
   //! Every rank sends to_rank[r] to rank r and gets what each rank sent it, in from_rank[r].
   void all_to_all(const std::vector<std::vector<double>>& to_rank,
                   std::vector<std::vector<double>>& from_rank) const;
+  //! The same when ranks mostly send to their `neighbours` (a symmetric relation: each of a
+  //! rank's neighbours lists it too): the counts go only between neighbours, after one
+  //! allreduce that tells whether any rank sends beyond them (then all_to_all). O(neighbours)
+  //! messages and O(log P) latency instead of the O(P) all-to-all of counts.
+  void neighbour_all_to_all(const std::vector<std::vector<double>>& to_rank,
+                            std::vector<std::vector<double>>& from_rank,
+                            const std::vector<int>& neighbours) const;
   std::vector<double> all_gather(const std::vector<double>& mine) const override;
   //! Stop every rank of the run with this exit code (a failure one rank found, which the
   //! others, waiting in a collective call, cannot learn of).

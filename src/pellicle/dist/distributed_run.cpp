@@ -101,8 +101,11 @@ PatchRun<D>::PatchRun(const Communicator& world, std::vector<Patch<D>> patches,
 template <int D>
 void PatchRun<D>::use_patches(std::vector<Patch<D>> patches, const Grid<D>& window) {
   patches_ = std::move(patches);
-  halo_.emplace(world_, halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach_, world_.rank()),
-                window);
+  const auto plan = halo_plan(patches_, window.cells(), Grid<D>::kGhost, reach_, world_.rank());
+  halo_.emplace(world_, plan, window);
+  // Patches that share nodes touch: a point that moved less than a cell goes to one of them.
+  neighbours_.clear();
+  for (const auto& shared : plan) neighbours_.push_back(shared.rank);
   cell_sums_.emplace(world_, cell_neighbours(patches_, window.cells(), reach_, world_.rank()));
   constexpr double kOpen = std::numeric_limits<double>::infinity();
   boxes_.clear();
@@ -179,7 +182,7 @@ void PatchRun<D>::migrate(Simulation<D>& simulation) {
   }
   for (std::size_t t = 1; t < leaving_.size(); ++t)
     leaving_[0].insert(leaving_[0].end(), leaving_[t].begin(), leaving_[t].end());
-  const long sent = migrate_points(world_, leaving_[0], points);
+  const long sent = migrate_points(world_, leaving_[0], points, &neighbours_);
   migrated_ += sent;
   if (sent > 0 || points.size() != n) simulation.points_changed();
 }

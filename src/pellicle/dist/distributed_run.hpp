@@ -62,6 +62,7 @@ class PatchRun final : public StepHook<D> {
   int reach_;
   std::vector<Patch<D>> patches_;
   std::vector<Box> boxes_;
+  std::vector<int> neighbours_;  //!< the ranks whose patches share nodes with this one
   std::optional<HaloSums<D>> halo_;
   std::optional<RankOrderSums> cell_sums_;          //!< of the whole-grid cell fields
   std::vector<std::vector<LeavingPoint>> leaving_;  //!< per thread

@@ -85,7 +85,7 @@ void keep_points(const std::vector<char>& keep, Particles<D>& points) {
 
 template <int D>
 long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
-                    Particles<D>& points) {
+                    Particles<D>& points, const std::vector<int>* neighbours) {
   const long n = points.size();
   // A record per leaving point: its body, then every array's values.
   auto arrays = point_arrays(points);
@@ -97,7 +97,10 @@ long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& 
     out.push_back(points.body[p]);
     for (const auto& [c, data] : arrays) out.insert(out.end(), data + p * c, data + (p + 1) * c);
   }
-  world.all_to_all(to_rank, from_rank);
+  if (neighbours)
+    world.neighbour_all_to_all(to_rank, from_rank, *neighbours);
+  else
+    world.all_to_all(to_rank, from_rank);
   long received = 0;
   for (const auto& in : from_rank) received += static_cast<long>(in.size()) / record;
   if (leaving.empty() && received == 0) return 0;
@@ -171,8 +174,8 @@ long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& 
 template void keep_points<2>(const std::vector<char>&, Particles<2>&);
 template void keep_points<3>(const std::vector<char>&, Particles<3>&);
 template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
-                                Particles<2>&);
+                                Particles<2>&, const std::vector<int>*);
 template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,
-                                Particles<3>&);
+                                Particles<3>&, const std::vector<int>*);
 
 }  // namespace pellicle

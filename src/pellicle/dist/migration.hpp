@@ -20,9 +20,11 @@ struct LeavingPoint {
 
 //! Send the `leaving` points (in ascending point order) to their ranks, and take in the points
 //! the other ranks send here. Collective. Returns the number of points this rank sent.
+//! `neighbours` (symmetric; null: any rank): the ranks points mostly go to, so that the
+//! counts go only between them (Communicator::neighbour_all_to_all).
 template <int D>
 long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
-                    Particles<D>& points);
+                    Particles<D>& points, const std::vector<int>* neighbours = nullptr);
 
 //! Keep only the points with keep[p] true (a rank's share of a case every rank built whole).
 template <int D>
@@ -31,8 +33,8 @@ void keep_points(const std::vector<char>& keep, Particles<D>& points);
 extern template void keep_points<2>(const std::vector<char>&, Particles<2>&);
 extern template void keep_points<3>(const std::vector<char>&, Particles<3>&);
 extern template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
-                                       Particles<2>&);
+                                       Particles<2>&, const std::vector<int>*);
 extern template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,
-                                       Particles<3>&);
+                                       Particles<3>&, const std::vector<int>*);
 
 }  // namespace pellicle
