@@ -13,29 +13,29 @@ void RigidBodies<D>::after_to_grid(Simulation<D>& simulation) {
   // of a rigid body. Each rank marks the nodes its points touch, the marks are summed over
   // the ranks that hold a node, and every marked node is prescribed.
   const bool distributed = simulation.collective() != nullptr;
-  if (distributed) marks_.assign(fields.centre_of_mass().node_count() * rigid, 0.0);
-  std::vector<std::vector<long>>& touched = touched_;
-  touched.resize(rigid);
+  const long nodes = fields.centre_of_mass().node_count();
+  if (distributed) marks_.assign(nodes * rigid, 0.0);
+  touched_.resize(rigid);
   for (int r = 0; r < rigid; ++r) {
     const auto& body = points.bodies[bodies_[r]];
-    touched[r].clear();
-    simulation.transfer().touched_nodes(fields.centre_of_mass(), body.begin, body.end, touched[r]);
+    touched_[r].clear();
+    simulation.transfer().touched_nodes(fields.centre_of_mass(), body.begin, body.end, touched_[r]);
     if (distributed)
-      for (long n : touched[r]) marks_[n * rigid + r] = 1.0;
+      for (long n : touched_[r]) marks_[n * rigid + r] = 1.0;
   }
   if (distributed) {
     simulation.complete_node_sums({{marks_.data(), rigid}});
     for (int r = 0; r < rigid; ++r) {
-      touched[r].clear();
-      for (long n = 0; n * rigid < static_cast<long>(marks_.size()); ++n)
-        if (marks_[n * rigid + r] > 0.0) touched[r].push_back(n);
+      touched_[r].clear();
+      for (long n = 0; n < nodes; ++n)
+        if (marks_[n * rigid + r] > 0.0) touched_[r].push_back(n);
     }
   }
   auto& all = prescribed_;
   all.clear();
   for (int r = 0; r < rigid; ++r) {
     const std::size_t first = all.size();
-    for (long n : touched[r]) all.emplace_back(n, velocity_[r]);
+    for (long n : touched_[r]) all.emplace_back(n, velocity_[r]);
     if (fields.per_body())
       fields.field(bodies_[r]).prescribe(all.data() + first, all.data() + all.size());
   }
