@@ -2,6 +2,9 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+
+#include "pellicle/mpm/body_as_built.hpp"
 
 namespace pellicle {
 
@@ -20,27 +23,24 @@ GatheredFrames<D>::GatheredFrames(const Communicator& world,
 template <int D>
 void GatheredFrames<D>::estimate(const std::vector<Vec<D>>& position, long begin, long end,
                                  std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) {
-  constexpr int kRecord = 1 + 3 * D;  // index, position, normal, tangent
-  const std::vector<double>& index = points_[index_];
-  mine_.clear();
-  auto append = [this](const Vec<D>& v) { mine_.insert(mine_.end(), v.data(), v.data() + D); };
-  for (long p = begin; p < end; ++p) {
-    mine_.push_back(index[p]);
-    append(position[p]), append(normal[p]), append(tangent[p]);
-  }
-  const std::vector<double> all = world_.all_gather(mine_);
+  // Position, normal, tangent of every point of the body, in generation order.
+  auto append = [&](long p, std::vector<double>& out) {
+    for (const auto* v : {&position[p], &std::as_const(normal)[p], &std::as_const(tangent)[p]})
+      out.insert(out.end(), v->data(), v->data() + D);
+  };
+  const std::vector<double> all = body_as_built(points_, begin, end, 3 * D, append, &world_, true);
   const long count = static_cast<long>(position_.size());
-  if (static_cast<long>(all.size()) != count * kRecord)
+  if (static_cast<long>(all.size()) != count * 3 * D)
     throw std::logic_error("a membrane body's points on all ranks are " +
-                           std::to_string(all.size() / kRecord) + ", not its " +
+                           std::to_string(all.size() / (3 * D)) + ", not its " +
                            std::to_string(count));
-  for (std::size_t r = 0; r < all.size(); r += kRecord) {
-    const long i = static_cast<long>(all[r]);
-    position_[i] = Eigen::Map<const Vec<D>>(&all[r + 1]);
-    normal_[i] = Eigen::Map<const Vec<D>>(&all[r + 1 + D]);
-    tangent_[i] = Eigen::Map<const Vec<D>>(&all[r + 1 + 2 * D]);
+  for (long i = 0; i < count; ++i) {
+    position_[i] = Vec<D>(all.data() + 3 * D * i);
+    normal_[i] = Vec<D>(all.data() + 3 * D * i + D);
+    tangent_[i] = Vec<D>(all.data() + 3 * D * i + 2 * D);
   }
   whole_->estimate(position_, 0, count, normal_, tangent_);
+  const std::vector<double>& index = points_[index_];
   for (long p = begin; p < end; ++p) {
     const long i = static_cast<long>(index[p]);
     normal[p] = normal_[i];

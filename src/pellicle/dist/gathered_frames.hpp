@@ -34,7 +34,6 @@ class GatheredFrames final : public FrameEstimator<D> {
   const Particles<D>& points_;
   Column<double> index_;
   std::vector<Vec<D>> position_, normal_, tangent_;  //!< the whole body, in generation order
-  std::vector<double> mine_;                         //!< this rank's share, packed
 };
 
 //! Give every membrane body of `points` (built whole on every rank, not yet split; `index`

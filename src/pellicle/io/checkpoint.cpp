@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "pellicle/core/error.hpp"
+#include "pellicle/mpm/body_as_built.hpp"
 
 namespace pellicle {
 namespace {
@@ -155,41 +156,36 @@ struct WholeArray {
   std::vector<double> values;
 };
 
-//! A body's point arrays in a distributed run, gathered on rank 0 (empty elsewhere). Each rank
-//! sends its points' rows (the point's index in the body as built, then every array) and
-//! rank 0 puts each row in its place. Collective.
+//! A body's point arrays in a distributed run, gathered on rank 0 in the order the points were
+//! built (empty elsewhere). Collective.
 template <int D>
 std::vector<WholeArray> gather_body(const Particles<D>& p, const BodyInfo<D>& body,
                                     const Collective& ranks) {
   std::vector<WholeArray> arrays;
-  std::vector<const double*> sources;
-  int row = 1;
+  std::vector<const double*> sources;  // each array's values of the body's first point
+  int width = 0;
   for_each_point_array<D>(p, body.begin, [&](const std::string& name, const double* data, int k) {
     arrays.push_back({name, k, {}});
     sources.push_back(data);
-    row += k;
+    width += k;
   });
-  const auto& index = p.template named<double>(column_names::body_index);
-  std::vector<double> mine;
-  mine.reserve(body.count() * row);
-  for (long i = 0; i < body.count(); ++i) {
-    mine.push_back(index[body.begin + i]);
+  auto append = [&](long point, std::vector<double>& out) {
+    const long i = point - body.begin;
     for (std::size_t a = 0; a < arrays.size(); ++a) {
       const int k = arrays[a].components;
-      mine.insert(mine.end(), sources[a] + i * k, sources[a] + (i + 1) * k);
+      out.insert(out.end(), sources[a] + i * k, sources[a] + (i + 1) * k);
     }
-  }
-  const std::vector<double> all = ranks.gather_to_first(mine);
-  const long count = static_cast<long>(all.size()) / row;
+  };
+  const std::vector<double> rows =
+      body_as_built(p, body.begin, body.end, width, append, &ranks, false);
+  const long count = static_cast<long>(rows.size()) / width;
   for (auto& a : arrays) a.values.resize(count * a.components);
-  for (long r = 0; r < count; ++r) {
-    const double* v = all.data() + r * row;
-    const long i = static_cast<long>(*v++);
+  const double* v = rows.data();
+  for (long i = 0; i < count; ++i)
     for (auto& a : arrays) {
       std::copy_n(v, a.components, a.values.data() + i * a.components);
       v += a.components;
     }
-  }
   return arrays;
 }
 

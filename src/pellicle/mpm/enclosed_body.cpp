@@ -1,5 +1,7 @@
 #include "pellicle/mpm/enclosed_body.hpp"
 
+#include "pellicle/mpm/body_as_built.hpp"
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -15,17 +17,14 @@ template <int D>
 std::vector<Vec<D>> membrane_as_built(const Particles<D>& points, int membrane,
                                       const Collective* ranks) {
   const auto& body = points.bodies[membrane];
-  if (!ranks) return {points.position.begin() + body.begin, points.position.begin() + body.end};
-  const auto& index = points.template named<double>(column_names::body_index);
-  std::vector<double> mine;
-  for (long p = body.begin; p < body.end; ++p) {
-    mine.push_back(index[p]);
-    mine.insert(mine.end(), points.position[p].data(), points.position[p].data() + D);
-  }
-  const std::vector<double> all = ranks->all_gather(mine);
-  std::vector<Vec<D>> out(all.size() / (D + 1));
-  for (std::size_t r = 0; r < all.size(); r += D + 1)
-    out[static_cast<long>(all[r])] = Vec<D>(all.data() + r + 1);
+  const std::vector<double> x = body_as_built(
+      points, body.begin, body.end, D,
+      [&](long p, std::vector<double>& out) {
+        out.insert(out.end(), points.position[p].data(), points.position[p].data() + D);
+      },
+      ranks, true);
+  std::vector<Vec<D>> out(x.size() / D);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec<D>(x.data() + i * D);
   return out;
 }
 
