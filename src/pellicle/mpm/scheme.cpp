@@ -37,8 +37,7 @@ class ModifiedUpdateStressLast final : public Scheme {
   void advance(Stages& s, double dt) const override {
     s.to_grid(true);
     s.grid(dt);
-    s.to_points(dt);
-    s.remap(dt);
+    s.to_points_and_remap(dt);
     s.materials(dt);
   }
   const char* name() const override { return "musl"; }

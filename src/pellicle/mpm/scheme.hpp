@@ -27,8 +27,10 @@ class Stages {
   //! The momentum solve on every field, then the grid-update hooks.
   virtual void grid(double dt) = 0;
   virtual void to_points(double dt) = 0;
-  //! MUSL: convected grid velocities from the updated points, then the grid-update hooks.
-  virtual void remap(double dt) = 0;
+  //! MUSL: to_points, then the convected grid velocities from the updated points (the remap)
+  //! and the grid-update hooks; the remap's scatter shares to_points' pass over the points
+  //! unless a hook changes point velocities in between.
+  virtual void to_points_and_remap(double dt) = 0;
   //! Velocity gradients, densities, frames and each material's update.
   virtual void materials(double dt) = 0;
 };

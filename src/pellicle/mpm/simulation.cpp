@@ -211,19 +211,33 @@ void Simulation<D>::grid(double dt) {
 
 template <int D>
 void Simulation<D>::to_points(double dt) {
+  move_points(dt, false);
+}
+
+template <int D>
+void Simulation<D>::to_points_and_remap(double dt) {
+  const bool separate = std::any_of(hooks_.begin(), hooks_.end(),
+                                    [](const auto& hook) { return hook->sets_point_velocities(); });
+  move_points(dt, !separate);
+  if (separate)
+    for (int k = 0; k < fields_.count(); ++k)
+      transfer_->remap(points_, fields_.field(k), fields_.points(k));
+  convected_velocities(dt);
+}
+
+template <int D>
+void Simulation<D>::move_points(double dt, bool remap) {
   PointFailure failure;
   max_speed_ = 0.0;
   for (int k = 0; k < fields_.count() && failure.point < 0; ++k)
     max_speed_ = std::max(max_speed_, transfer_->to_points(fields_.field(k), dt, points_, failure,
-                                                           fields_.points(k)));
+                                                           fields_.points(k), remap));
   if (failure.point >= 0) fail(failure.point, failure.what);
   for (auto& hook : hooks_) hook->after_to_points(*this);
 }
 
 template <int D>
-void Simulation<D>::remap(double dt) {
-  for (int k = 0; k < fields_.count(); ++k)
-    transfer_->remap(points_, fields_.field(k), fields_.points(k));
+void Simulation<D>::convected_velocities(double dt) {
   for (auto& hook : hooks_) hook->after_scatter(*this, {false, true, false});
   for (int k = 0; k < fields_.count(); ++k) fields_.field(k).velocities_from_momentum();
   if (fields_.per_body()) {

@@ -157,12 +157,16 @@ class Simulation final : private Stages {
   void forces_to_grid() override;
   void grid(double dt) override;
   void to_points(double dt) override;
-  void remap(double dt) override;
+  void to_points_and_remap(double dt) override;
   void materials(double dt) override;
 
   double time_step();       // stage 1, with the CFL check
   void stencils();          // stage 2
   void observe(double dt);  // stage 8
+  //! to_points on every field; with `remap`, each field's pass also scatters the remap.
+  void move_points(double dt, bool remap);
+  //! The rest of the remap after its scatter: sums completed, velocities p/m, hooks.
+  void convected_velocities(double dt);
   void update_frames();
   void settle_cell_densities(double dt);
   //! Each material's check of its bodies' points (and the fluids' thinning warning).

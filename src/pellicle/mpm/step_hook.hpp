@@ -84,6 +84,9 @@ class StepHook {
   //! Figures of the run for summary.json ("figures": name → value), asked once at its end on
   //! every rank of a distributed run (so a hook may reduce them over the ranks).
   virtual void summary_figures(std::vector<std::pair<std::string, double>>& /*out*/) const {}
+  //! after_to_points changes point velocities (rigid bodies): the MUSL remap then needs a
+  //! pass of its own after it.
+  virtual bool sets_point_velocities() const { return false; }
   //! The hook needs each body in its own grid field (contact models).
   virtual bool needs_body_fields() const { return false; }
   //! Hooks that carry state from step to step name it (a checkpoint group); empty: none.

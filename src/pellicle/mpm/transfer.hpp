@@ -76,9 +76,11 @@ class Transfer {
 
   //! Stage `to_points`: move points with the Lagrangian grid velocity and update their
   //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves
-  //! the domain or becomes non-finite is reported in `failure` (the first one found).
-  virtual double to_points(const Grid<D>& grid, double dt, Particles<D>& points,
-                           PointFailure& failure, PointRange range = {}) = 0;
+  //! the domain or becomes non-finite is reported in `failure` (the first one found). With
+  //! `remap`, the same pass over the points also does remap()'s scatter of the updated
+  //! velocities into the grid's momentum, with the same result as remap() after it.
+  virtual double to_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                           PointRange range = {}, bool remap = false) = 0;
 
   //! Nodes per point stencil: the kernel's width to the power D.
   virtual int stencil_size() const = 0;

@@ -15,59 +15,6 @@
 
 namespace pellicle {
 
-//! The small vector products of the node loops written element by element in 3D: Eigen's
-//! packet code for 3-vectors spills to the stack inside these loops and runs several times
-//! slower (a 2D vector is one SSE2 packet, and there Eigen's code is the fast one). Each keeps
-//! the order of operations of the Eigen expression it replaced, so results are bitwise those
-//! of before (docs/theory/performance.md).
-namespace node_algebra {
-//! y += a x
-template <int D>
-inline void add_scaled(Vec<D>& y, double a, const Vec<D>& x) {
-  if constexpr (D == 2)
-    y += a * x;  // one SSE2 packet: Eigen's code is the fast one
-  else
-    for (int i = 0; i < D; ++i) y[i] += a * x[i];
-}
-//! M += u vᵀ
-template <int D>
-inline void add_outer(Mat<D>& M, const Vec<D>& u, const Vec<D>& v) {
-  if constexpr (D == 2)
-    M += u * v.transpose();
-  else
-    for (int j = 0; j < D; ++j)
-      for (int i = 0; i < D; ++i) M(i, j) += u[i] * v[j];
-}
-//! momentum += c (C dx): the APIC term of the scatter. In 3D term by term with Eigen's
-//! grouping of a matrix-vector product (the scalar folded into the matrix; rows 0 and 1 as one
-//! packet, ((t0 + t1) + t2), the third row as its tail, t0 + (t1 + t2)).
-template <int D>
-inline void add_affine(Vec<D>& momentum, double c, const Mat<D>& C, const Vec<D>& dx) {
-  if constexpr (D == 2) {
-    momentum += c * (C * dx);
-  } else {
-    for (int i = 0; i < 3; ++i) {
-      const double t0 = (c * C(i, 0)) * dx[0], t1 = (c * C(i, 1)) * dx[1],
-                   t2 = (c * C(i, 2)) * dx[2];
-      momentum[i] += i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2);
-    }
-  }
-}
-//! force += N external − S ∇N (IJNME eq 16), S = V σ; the product grouped as in add_affine.
-template <int D>
-inline void add_force(Vec<D>& force, double N, const Vec<D>& external, const Mat<D>& S,
-                      const Vec<D>& grad) {
-  if constexpr (D == 2) {
-    force += N * external - S * grad;
-  } else {
-    for (int i = 0; i < 3; ++i) {
-      const double t0 = S(i, 0) * grad[0], t1 = S(i, 1) * grad[1], t2 = S(i, 2) * grad[2];
-      force[i] += N * external[i] - (i < 2 ? (t0 + t1) + t2 : t0 + (t1 + t2));
-    }
-  }
-}
-}  // namespace node_algebra
-
 template <int D, class Kernel>
 class TransferImpl final : public Transfer<D> {
  public:
@@ -140,10 +87,11 @@ class TransferImpl final : public Transfer<D> {
     scatter<false, true, false>(points, gravity, grid, range);
   }
 
-  double to_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
-                   PointRange range) override {
-    return heat_.valid() ? move_points<true>(grid, dt, points, failure, range)
-                         : move_points<false>(grid, dt, points, failure, range);
+  double to_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                   PointRange range, bool remap) override {
+    if (heat_.valid()) return move_points<true, true>(grid, dt, points, failure, range, remap);
+    return apic() ? move_points<true, false>(grid, dt, points, failure, range, remap)
+                  : move_points<false, false>(grid, dt, points, failure, range, remap);
   }
 
   int stencil_size() const override {
@@ -196,15 +144,31 @@ class TransferImpl final : public Transfer<D> {
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     long first_bad = -1;
     for (long p = begin; p < end; ++p) {
-      Mat<D> L = Mat<D>::Zero();
+      // L = Σ v_i ∇N_iᵀ row by row (StencilRow): column 0 from Σ_a dφ₀(a) v_i, the others from
+      // Σ_a φ₀(a) v_i; the radial velocity Σ N_i v_i,r from the latter.
+      const Stencil<D, Kernel> s = stencil(grid, p);
+      double L[D][D] = {};  // L[i][e] = ∂v_i/∂x_e
       double v_radial = 0.0;
-      for_each_node(stencil(grid, p), strides,
-                    [&](long node, double N, const Vec<D>& grad, const IVec<D>&) {
-                      node_algebra::add_outer<D>(L, grid.velocity[node], grad);
-                      if (axisymmetric) v_radial += N * grid.velocity[node][0];
-                    });
-      gradient[p - begin] = L;
-      double volumetric = L.trace();
+      for_each_row(s, strides, [&](const StencilRow<D>& row) {
+        double sum_w[D] = {}, sum_dw[D] = {};
+        for (int a = 0; a < Kernel::width; ++a) {
+          const double* v_node = grid.velocity[row.first + a].data();
+          for (int i = 0; i < D; ++i) {
+            sum_w[i] += s.w[0][a] * v_node[i];
+            sum_dw[i] += s.dw[0][a] * v_node[i];
+          }
+        }
+        for (int i = 0; i < D; ++i) {
+          L[i][0] += row.weight * sum_dw[i];
+          for (int e = 1; e < D; ++e) L[i][e] += row.grad[e] * sum_w[i];
+        }
+        v_radial += row.weight * sum_w[0];
+      });
+      double volumetric = 0.0;
+      for (int i = 0; i < D; ++i) {
+        volumetric += L[i][i];
+        for (int e = 0; e < D; ++e) gradient[p - begin](i, e) = L[i][e];
+      }
       if (axisymmetric) {
         hoop_rate[p - begin] = v_radial / points.position[p][0];
         volumetric += hoop_rate[p - begin];
@@ -230,74 +194,116 @@ class TransferImpl final : public Transfer<D> {
   //! (r_out from weighted sums: Σ N_i = 1, Σ N_i (x_i − x_p) = 0). With the B-splines' C' = B D⁻¹,
   //! r_out = Σ_i N_i |v_i − v_p' − C_p'(x_i − x_p)|² ≥ 0; the gradient form's C' can give
   //! energy back (r_out < 0).
-  template <bool Heat>
-  double move_points(const Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
-                     PointRange range) {
+  template <bool Apic, bool Heat>
+  double move_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                     PointRange range, bool remap) {
+    static_assert(Apic || !Heat);
     const long n = range.last(points.size());
     const auto& strides = grid.strides();
     const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
                          : options_.update == VelocityUpdate::blend ? options_.flip_fraction
                                                                     : 0.0;
-    const bool apic_update = apic();
-    Mat<D>* affine_out = apic_update ? points[affine_].data() : nullptr;
+    Mat<D>* affine_out = Apic ? points[affine_].data() : nullptr;
     double* heat = Heat ? points[heat_].data() : nullptr;
     const double h = grid.cell();
     const double inertia_scale =
         Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
     double speed_squared = 0.0;  // the largest |v|²: one square root at the end
     long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) reduction(max : speed_squared) reduction(min : first_bad)
-    for (long p = range.begin; p < n; ++p) {
-      const Stencil<D, Kernel> s = stencil(grid, p);
-      Vec<D> v_lagrangian = Vec<D>::Zero();
-      Vec<D> v_change = Vec<D>::Zero();
-      Mat<D> affine = Mat<D>::Zero();
-      // Heat only: r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the
-      // B-splines' is the constant apic_inertia h²).
-      double r_in = 0.0, s_new = 0.0;
-      Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
-      const Vec<D> v_old = points.velocity[p];
-      Mat<D> c_old;
-      if constexpr (Heat) c_old = affine_out[p];
-      for_each_node(s, strides, [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
-        const Vec<D>& v_node = grid.velocity[node];
-        const Vec<D>& dv_node = grid.velocity_change[node];
-        node_algebra::add_scaled<D>(v_lagrangian, N, v_node);
-        node_algebra::add_scaled<D>(v_change, N, dv_node);
-        if (apic_update) {
-          Vec<D> dx;
-          for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-          if constexpr (Kernel::apic_inertia > 0.0) {
-            Vec<D> scaled;  // (N / (D_dd h²)) v_i
-            for (int d = 0; d < D; ++d) scaled[d] = (N * inertia_scale) * v_node[d];
-            node_algebra::add_outer<D>(affine, scaled, dx);
-          } else {
-            node_algebra::add_outer<D>(affine, v_node, grad);
+    if (remap) {
+      zero(grid.momentum);
+      buffers_.prepare(grid);
+    }
+#pragma omp parallel reduction(max : speed_squared) reduction(min : first_bad)
+    {
+      const ThreadTarget target = remap ? thread_target(grid, range.begin, n) : ThreadTarget{};
+#pragma omp for schedule(static) nowait
+      for (long p = range.begin; p < n; ++p) {
+        const Stencil<D, Kernel> s = stencil(grid, p);
+        // Row by row (StencilRow): v_L = Σ N_i v_i, Δv = Σ N_i Δv_i and for APIC either
+        // Σ N_i v_i indexᵢᵀ (B-splines: C' = (Σ N_i v_i dx_iᵀ) D⁻¹ with dx_i = (offset + index_i)
+        // h) or Σ v_i ∇N_iᵀ (the gradient form).
+        double v_lagrangian[D] = {}, v_change[D] = {}, moment[D][D] = {};  // moment[d]: column d
+        // Heat only: r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the
+        // B-splines' is the constant apic_inertia h²).
+        double r_in = 0.0, s_new = 0.0;
+        Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
+        const Vec<D> v_old = points.velocity[p];
+        Mat<D> c_old;
+        if constexpr (Heat) c_old = affine_out[p];
+        for_each_row(s, strides, [&](const StencilRow<D>& row) {
+          double sum_w[D] = {}, sum_change[D] = {}, sum_moment[D] = {};
+          for (int a = 0; a < Kernel::width; ++a) {
+            const long node = row.first + a;
+            const double* v_node = grid.velocity[node].data();
+            const double* dv_node = grid.velocity_change[node].data();
+            const double w = s.w[0][a];
+            const double moment_weight = Kernel::apic_inertia > 0.0 ? a * w : s.dw[0][a];
+            for (int i = 0; i < D; ++i) {
+              sum_w[i] += w * v_node[i];
+              sum_change[i] += w * dv_node[i];
+              if constexpr (Apic) sum_moment[i] += moment_weight * v_node[i];
+            }
+            if constexpr (Heat) {
+              const double N = w * row.weight;
+              Vec<D> dx;
+              for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + (d == 0 ? a : row.index[d])) * h;
+              const Vec<D> v_i = grid.velocity[node], dv_i = grid.velocity_change[node];
+              r_in += N * (v_old + c_old * dx - (v_i - dv_i)).squaredNorm();
+              s_new += N * v_i.squaredNorm();
+              if constexpr (Kernel::apic_inertia == 0.0) inertia += N * dx.cwiseAbs2();
+            }
           }
-          if constexpr (Heat) {
-            r_in += N * (v_old + c_old * dx - (v_node - dv_node)).squaredNorm();
-            s_new += N * v_node.squaredNorm();
-            if constexpr (Kernel::apic_inertia == 0.0) inertia += N * dx.cwiseAbs2();
+          for (int i = 0; i < D; ++i) {
+            v_lagrangian[i] += row.weight * sum_w[i];
+            v_change[i] += row.weight * sum_change[i];
+            if constexpr (Apic) {
+              moment[0][i] += row.weight * sum_moment[i];
+              for (int e = 1; e < D; ++e)
+                moment[e][i] +=
+                    (Kernel::apic_inertia > 0.0 ? row.index[e] * row.weight : row.grad[e]) *
+                    sum_w[i];
+            }
           }
+        });
+        Mat<D> affine;
+        if constexpr (Apic) {
+          for (int e = 0; e < D; ++e)
+            for (int i = 0; i < D; ++i)
+              affine(i, e) =
+                  Kernel::apic_inertia > 0.0
+                      ? inertia_scale * h * (v_lagrangian[i] * s.offset[e] + moment[e][i])
+                      : moment[e][i];
         }
-      });
-      if constexpr (Heat) {
-        double affine_energy = 0.0;  // Σ N |C' dx|² = Σ_d D_dd |C' e_d|²
-        for (int d = 0; d < D; ++d) affine_energy += inertia[d] * affine.col(d).squaredNorm();
-        const double r_out = s_new - v_lagrangian.squaredNorm() - affine_energy;
-        heat[p] = 0.5 * (r_in + r_out);
+        if constexpr (Heat) {
+          double affine_energy = 0.0;  // Σ N |C' dx|² = Σ_d D_dd |C' e_d|²
+          for (int d = 0; d < D; ++d) affine_energy += inertia[d] * affine.col(d).squaredNorm();
+          const double r_out = s_new - Vec<D>(v_lagrangian).squaredNorm() - affine_energy;
+          heat[p] = 0.5 * (r_in + r_out);
+        }
+        // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
+        Vec<D> x, v;
+        for (int i = 0; i < D; ++i) {
+          x[i] = points.position[p][i] + dt * v_lagrangian[i];
+          v[i] = alpha * (v_old[i] + v_change[i]) + (1.0 - alpha) * v_lagrangian[i];
+        }
+        // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
+        // it: the mirrored ghosts cancel its normal velocity only to round-off.
+        const bool inside = grid.contains(x) || grid.return_to_face(x);
+        points.position[p] = x;
+        points.velocity[p] = v;
+        if constexpr (Apic) affine_out[p] = affine;
+        if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
+        speed_squared = std::max(speed_squared, v.squaredNorm());
+        // MUSL's remap (thesis eq 3.24) of this point's new momentum, with the same stencil.
+        if (remap)
+          scatter_point<false, false, Apic, true>(points, p, s, Vec<D>::Zero(), grid, false,
+                                                  affine_out, target);
       }
-      // Points move with the Lagrangian grid velocity (IJNME eq 11, second line).
-      Vec<D> x = points.position[p] + dt * v_lagrangian;
-      Vec<D> v = alpha * (v_old + v_change) + (1.0 - alpha) * v_lagrangian;
-      // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
-      // it: the mirrored ghosts cancel its normal velocity only to round-off.
-      const bool inside = grid.contains(x) || grid.return_to_face(x);
-      points.position[p] = x;
-      points.velocity[p] = v;
-      if (apic_update) affine_out[p] = affine;
-      if (!inside || !v.allFinite()) first_bad = std::min(first_bad, p);
-      speed_squared = std::max(speed_squared, v.squaredNorm());
+    }
+    if (remap) {
+      buffers_.reduce(grid, false, true, false);
+      grid.fold(grid.momentum);
     }
     if (first_bad != std::numeric_limits<long>::max()) {
       failure.point = first_bad;
@@ -327,42 +333,16 @@ class TransferImpl final : public Transfer<D> {
   void scatter(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, PointRange range) {
     constexpr bool with_momentum = WithMass || MomentumOnly;
     const long n = range.last(points.size());
-    const auto& strides = grid.strides();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     const Mat<D>* affine = Affine ? points[affine_].data() : nullptr;
     buffers_.prepare(grid);
 #pragma omp parallel
     {
-      const int t = omp_get_thread_num();
-      // The nodes this thread's points touch (the same static share of the points as below);
-      // a lone thread writes everything into the grid and need not know.
-      long lo = std::numeric_limits<long>::max(), hi = -1;
-      if (omp_get_num_threads() > 1) {
+      const ThreadTarget target = thread_target(grid, range.begin, n);
 #pragma omp for schedule(static) nowait
-        for (long p = range.begin; p < n; ++p) {
-          IVec<D> first;
-          for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
-          const long base = grid.flatten(first);
-          lo = std::min(lo, base);
-          hi = std::max(hi, base + last_node_offset(strides));
-        }
-        buffers_.touched(t, lo, hi);
-#pragma omp barrier
-      }
-      const ScatterTarget<D> target = buffers_.target(t, grid);
-      // Every node of a thread whose whole range is its window goes to the grid: no test.
-      const bool direct = target.window_first <= lo && hi <= target.window_last;
-#pragma omp for schedule(static) nowait
-      for (long p = range.begin; p < n; ++p) {
-        if (direct)
-          scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
-              points, p, gravity, grid, axisymmetric, affine,
-              [&](long) -> const NodeFields<D>& { return target.grid; });
-        else
-          scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
-              points, p, gravity, grid, axisymmetric, affine,
-              [&](long node) -> const NodeFields<D>& { return target.at(node); });
-      }
+      for (long p = range.begin; p < n; ++p)
+        scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
+            points, p, stencil(grid, p), gravity, grid, axisymmetric, affine, target);
     }
     buffers_.reduce(grid, WithMass, with_momentum, WithForce);
     if constexpr (WithMass) grid.fold(grid.mass);
@@ -370,47 +350,125 @@ class TransferImpl final : public Transfer<D> {
     if constexpr (WithForce) grid.fold(grid.force);
   }
 
-  //! One point's share of the scatter, into the node fields `fields(node)` gives.
+  //! Where one thread's share of a scatter writes (scatter_buffers.hpp), and whether all of it
+  //! goes straight to the grid (every node its points touch lies in its window).
+  struct ThreadTarget {
+    ScatterTarget<D> target{};
+    bool direct = true;
+  };
+
+  //! This thread's target for a scatter over points [begin, end) with a static schedule; called
+  //! by every thread of a parallel region, after buffers_.prepare().
+  ThreadTarget thread_target(Grid<D>& grid, long begin, long end) {
+    const int t = omp_get_thread_num();
+    // The nodes this thread's points touch (the same static share of the points as the
+    // scatter's); a lone thread writes everything into the grid and need not know.
+    long lo = std::numeric_limits<long>::max(), hi = -1;
+    if (omp_get_num_threads() > 1) {
+      const auto& strides = grid.strides();
+#pragma omp for schedule(static) nowait
+      for (long p = begin; p < end; ++p) {
+        IVec<D> first;
+        for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
+        const long base = grid.flatten(first);
+        lo = std::min(lo, base);
+        hi = std::max(hi, base + last_node_offset(strides));
+      }
+      buffers_.touched(t, lo, hi);
+#pragma omp barrier
+    }
+    ThreadTarget target{buffers_.target(t, grid), true};
+    target.direct = target.target.window_first <= lo && hi <= target.target.window_last;
+    return target;
+  }
+
+  //! One point's share of a scatter, with the stencil `s`, into `target`.
+  template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly>
+  void scatter_point(const Particles<D>& points, long p, const Stencil<D, Kernel>& s,
+                     const Vec<D>& gravity, const Grid<D>& grid, bool axisymmetric,
+                     const Mat<D>* affine, const ThreadTarget& target) const {
+    if (target.direct)
+      scatter_point_into<WithMass, WithForce, Affine, MomentumOnly>(
+          points, p, s, gravity, grid, axisymmetric, affine,
+          [&](long) -> const NodeFields<D>& { return target.target.grid; });
+    else
+      scatter_point_into<WithMass, WithForce, Affine, MomentumOnly>(
+          points, p, s, gravity, grid, axisymmetric, affine,
+          [&](long node) -> const NodeFields<D>& { return target.target.at(node); });
+  }
+
+  //! One point's share of the scatter, into the node fields `fields(node)` gives, row by row
+  //! (StencilRow): per node i with weight N_i and x_i − x_p = dx_i,
+  //!   mass     N_i m,
+  //!   momentum N_i m (v + C dx_i)                  (APIC; C = 0 otherwise),
+  //!   force    N_i m (g + a_body) − V σ ∇N_i        (IJNME eq 16; axisymmetric: − N_i V σ_θθ / r).
+  //! With dx_i = (offset + index_i) h the momentum is N_i (q₀ + Σ_d index_i,d m h C e_d), and with
+  //! the gradient split of a row, V σ ∇N_i = dφ₀(a) (weight V σ e₀) + φ₀(a) Σ_{e>0} grad_e V σ e_e:
+  //! each row folds its factors into a few vectors and its nodes take one multiply-add per
+  //! component and field.
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly, class Fields>
-  void scatter_point(const Particles<D>& points, long p, const Vec<D>& gravity, const Grid<D>& grid,
-                     bool axisymmetric, const Mat<D>* affine, Fields&& fields) const {
+  void scatter_point_into(const Particles<D>& points, long p, const Stencil<D, Kernel>& s,
+                          const Vec<D>& gravity, const Grid<D>& grid, bool axisymmetric,
+                          const Mat<D>* affine, Fields&& fields) const {
     constexpr bool with_momentum = WithMass || MomentumOnly;
+    constexpr int W = Kernel::width;
     const double h = grid.cell();
-    const Stencil<D, Kernel> s = stencil(grid, p);
     const double m = points.mass[p];
-    const Vec<D> mv = m * points.velocity[p];
-    Mat<D> stress_volume;  // V_p σ_p, in-plane part
-    double hoop_over_r = 0.0;
-    Vec<D> external = Vec<D>::Zero();
+    double q0[D],
+        dq[D][D] = {};  // momentum per unit weight at stencil node 0; dq[e]: per node along e
+    for (int i = 0; i < D; ++i) q0[i] = m * points.velocity[p][i];
+    if constexpr (Affine) {
+      const Mat<D>& C = affine[p];
+      for (int i = 0; i < D; ++i) {
+        double c_offset = 0.0;
+        for (int d = 0; d < D; ++d) c_offset += C(i, d) * s.offset[d];
+        q0[i] += m * h * c_offset;
+        for (int e = 0; e < D; ++e) dq[e][i] = m * h * C(i, e);
+      }
+    }
+    double stress_volume[D][D] = {};  // column e of V_p σ_p (in-plane part)
+    double external[D] = {}, hoop_over_r = 0.0;
     if constexpr (WithForce) {
       const Mat3 sigma = to_mat3<D>(points.stress[p]);
-      stress_volume = points.volume[p] * sigma.template topLeftCorner<D, D>();
-      if (axisymmetric) hoop_over_r = points.volume[p] * sigma(2, 2) / points.position[p][0];
-      external = m * (gravity + points.bodies[points.body[p]].applied_acceleration);
+      const double V = points.volume[p];
+      for (int e = 0; e < D; ++e)
+        for (int i = 0; i < D; ++i) stress_volume[e][i] = V * sigma(i, e);
+      if (axisymmetric) hoop_over_r = V * sigma(2, 2) / points.position[p][0];
+      const Vec<D> acceleration = gravity + points.bodies[points.body[p]].applied_acceleration;
+      for (int i = 0; i < D; ++i) external[i] = m * acceleration[i];
     }
-    Mat<D> C;  // a copy: the compiler need not reload it after every store to the grid
-    if constexpr (Affine) C = affine[p];
-    for_each_node(s, grid.strides(),
-                  [&](long node, double N, const Vec<D>& grad, const IVec<D>& a) {
-                    const NodeFields<D>& out = fields(node);
-                    if constexpr (WithMass) out.mass[node] += N * m;
-                    if constexpr (with_momentum) {
-                      Vec<D> momentum = out.momentum[node];
-                      node_algebra::add_scaled<D>(momentum, N, mv);
-                      if constexpr (Affine) {
-                        Vec<D> dx;
-                        for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + a[d]) * h;
-                        node_algebra::add_affine<D>(momentum, N * m, C, dx);
-                      }
-                      out.momentum[node] = momentum;
-                    }
-                    if constexpr (WithForce) {
-                      Vec<D> force = out.force[node];
-                      node_algebra::add_force<D>(force, N, external, stress_volume, grad);
-                      if (axisymmetric) force[0] -= N * hoop_over_r;
-                      out.force[node] = force;
-                    }
-                  });
+    for_each_row(s, grid.strides(), [&](const StencilRow<D>& row) {
+      const double row_mass = row.weight * m;
+      double momentum[D], step[D], force_w[D], force_dw[D];
+      for (int i = 0; i < D; ++i) {
+        double q = q0[i];
+        if constexpr (Affine)
+          for (int e = 1; e < D; ++e) q += row.index[e] * dq[e][i];
+        momentum[i] = row.weight * q;
+        step[i] = row.weight * dq[0][i];
+        force_dw[i] = row.weight * stress_volume[0][i];
+        double f = row.weight * external[i];
+        for (int e = 1; e < D; ++e) f -= row.grad[e] * stress_volume[e][i];
+        force_w[i] = f;
+      }
+      if (axisymmetric) force_w[0] -= row.weight * hoop_over_r;
+      for (int a = 0; a < W; ++a) {
+        const long node = row.first + a;
+        const NodeFields<D>& out = fields(node);
+        const double w = s.w[0][a], dw = s.dw[0][a];
+        if constexpr (WithMass) out.mass[node] += w * row_mass;
+        if constexpr (with_momentum) {
+          double* target = out.momentum[node].data();
+          for (int i = 0; i < D; ++i) target[i] += w * momentum[i];
+          if constexpr (Affine)
+            for (int i = 0; i < D; ++i) momentum[i] += step[i];
+        }
+        if constexpr (WithForce) {
+          double* target = out.force[node].data();
+          for (int i = 0; i < D; ++i) target[i] += w * force_w[i] - dw * force_dw[i];
+        }
+      }
+    });
   }
 
   static long last_node_offset(const std::array<long, D>& strides) {

@@ -22,6 +22,7 @@ class RigidBodies final : public StepHook<D> {
 
   void after_to_grid(Simulation<D>& simulation) override;
   void after_to_points(Simulation<D>& simulation) override;
+  bool sets_point_velocities() const override { return true; }
 
  private:
   std::vector<int> bodies_;

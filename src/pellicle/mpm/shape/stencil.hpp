@@ -96,4 +96,35 @@ inline void for_each_node(const Stencil<D, Kernel>& s,
   }
 }
 
+//! One row of a stencil: its nodes along axis 0 at a fixed offset (b[, c]) on the other axes.
+//! Node a of the row has the weight N = w[0][a]·weight and the gradient
+//! ∇N = (dw[0][a]·weight, w[0][a]·grad[1][, w[0][a]·grad[2]]): the tensor product split into
+//! its axis-0 factor and the rest, so a transfer sums a row with the 1D weights of axis 0 and
+//! folds in the rest once per row (docs/theory/performance.md, "Rows").
+template <int D>
+struct StencilRow {
+  long first;      //!< flat index of the row's node a = 0
+  int index[D];    //!< that node's offset within the stencil: (0, b[, c])
+  double weight;   //!< Π_{e>0} φ_e
+  double grad[D];  //!< grad[e] = (dφ_e/dx) Π_{f>0, f≠e} φ_f for e > 0; grad[0] = 0
+};
+
+//! Visit every row of a stencil: f(row). Fully inlined for a compile-time kernel.
+template <int D, class Kernel, class F>
+inline void for_each_row(const Stencil<D, Kernel>& s,
+                         const std::type_identity_t<std::array<long, D>>& strides, F&& f) {
+  constexpr int W = Kernel::width;
+  if constexpr (D == 2) {
+    for (int b = 0; b < W; ++b)
+      f(StencilRow<2>{s.base + b * strides[1], {0, b}, s.w[1][b], {0.0, s.dw[1][b]}});
+  } else {
+    for (int c = 0; c < W; ++c)
+      for (int b = 0; b < W; ++b)
+        f(StencilRow<3>{s.base + b * strides[1] + c * strides[2],
+                        {0, b, c},
+                        s.w[1][b] * s.w[2][c],
+                        {0.0, s.dw[1][b] * s.w[2][c], s.w[1][b] * s.dw[2][c]}});
+  }
+}
+
 }  // namespace pellicle
