@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
+#include <utility>
 
 #include "pellicle/mpm/scatter_buffers.hpp"
 #include "pellicle/mpm/shape/kernels.hpp"
@@ -59,8 +61,23 @@ class TransferImpl final : public Transfer<D> {
   void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
     const long n = points.size();
     anchors_.resize(n);
-#pragma omp parallel for schedule(static)
-    for (long p = 0; p < n; ++p) anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
+    anchored_points_ = n;
+#pragma omp parallel
+    {
+      // With threads, each one's node range for the scatters over all points (thread_target),
+      // from the same static share of the points, so the scatters need not read the anchors
+      // an extra time to find it.
+      const bool ranges = omp_get_num_threads() > 1;
+      long lo = std::numeric_limits<long>::max(), hi = -1;
+#pragma omp for schedule(static) nowait
+      for (long p = 0; p < n; ++p) {
+        anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
+        if (ranges) extend_node_range(grid, anchors_[p], lo, hi);
+      }
+#pragma omp single
+      anchored_ranges_.assign(omp_get_num_threads(), {0, -1});
+      anchored_ranges_[omp_get_thread_num()] = {lo, hi};
+    }
   }
 
   void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
@@ -365,14 +382,12 @@ class TransferImpl final : public Transfer<D> {
     // scatter's); a lone thread writes everything into the grid and need not know.
     long lo = std::numeric_limits<long>::max(), hi = -1;
     if (omp_get_num_threads() > 1) {
-      const auto& strides = grid.strides();
+      if (begin == 0 && end == anchored_points_ &&
+          static_cast<int>(anchored_ranges_.size()) == omp_get_num_threads()) {
+        std::tie(lo, hi) = anchored_ranges_[t];
+      } else {
 #pragma omp for schedule(static) nowait
-      for (long p = begin; p < end; ++p) {
-        IVec<D> first;
-        for (int d = 0; d < D; ++d) first[d] = anchors_[p].first[d];
-        const long base = grid.flatten(first);
-        lo = std::min(lo, base);
-        hi = std::max(hi, base + last_node_offset(strides));
+        for (long p = begin; p < end; ++p) extend_node_range(grid, anchors_[p], lo, hi);
       }
       buffers_.touched(t, lo, hi);
 #pragma omp barrier
@@ -471,10 +486,16 @@ class TransferImpl final : public Transfer<D> {
     });
   }
 
-  static long last_node_offset(const std::array<long, D>& strides) {
-    long offset = 0;
-    for (int d = 0; d < D; ++d) offset += (Kernel::width - 1) * strides[d];
-    return offset;
+  //! Widen [lo, hi] to the flat indices of the nodes of an anchor's stencil.
+  void extend_node_range(const Grid<D>& grid, const StencilAnchor<D>& anchor, long& lo,
+                         long& hi) const {
+    IVec<D> first;
+    for (int d = 0; d < D; ++d) first[d] = anchor.first[d];
+    const long base = grid.flatten(first);
+    long last = base;
+    for (int d = 0; d < D; ++d) last += (Kernel::width - 1) * grid.strides()[d];
+    lo = std::min(lo, base);
+    hi = std::max(hi, last);
   }
 
   //! This step's stencil of point p, rebuilt from its anchor (docs/theory/performance.md).
@@ -489,6 +510,10 @@ class TransferImpl final : public Transfer<D> {
   Column<double> heat_;    //!< APIC with a thermal model: dissipated energy per mass
   Kernel kernel_;
   std::vector<StencilAnchor<D>> anchors_;  //!< per point, at the step's start positions
+  long anchored_points_ = 0;               //!< the number of points anchors_ was made for
+  //! Per thread of compute_stencils, the nodes its static share of all points touches
+  //! (only with more than one thread).
+  std::vector<std::pair<long, long>> anchored_ranges_;
   ScatterBuffers<D> buffers_;
 };
 
