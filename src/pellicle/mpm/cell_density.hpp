@@ -9,10 +9,17 @@
 #include <utility>
 #include <vector>
 
+#include "pellicle/mpm/cell_field.hpp"
 #include "pellicle/mpm/grid.hpp"
 #include "pellicle/mpm/particles.hpp"
 
 namespace pellicle {
+
+//! Work arrays of cell_quadratic_density, kept by its caller from step to step.
+struct CellDensityWork {
+  std::vector<double> cell_mass;
+  CellSpreadCopies copies;
+};
 
 //! Set density and volume of the points in `ranges` (each [begin, end)) from the mass of all
 //! of them. Mass spread beyond a wall or symmetry face is reflected back into the domain;
@@ -22,6 +29,7 @@ namespace pellicle {
 template <int D>
 void cell_quadratic_density(const Grid<D>& grid, bool axisymmetric,
                             const std::vector<std::pair<long, long>>& ranges, Particles<D>& points,
-                            const std::function<void(std::vector<double>&)>& complete);
+                            const std::function<void(std::vector<double>&)>& complete,
+                            CellDensityWork& work);
 
 }  // namespace pellicle

@@ -57,12 +57,15 @@ long containing_cell(const Grid<D>& grid, const Vec<D>& x) {
 template <int D>
 void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
                      const std::vector<double>& weight, long begin, long end,
-                     std::vector<double>& cells) {
+                     std::vector<double>& cells, CellSpreadCopies& work) {
   const double inv_h = 1.0 / grid.cell();
   // Thread 0 adds into `cells`, the others into private copies summed at the end: no
   // atomics in the point loop.
   const int threads = omp_get_max_threads();
-  std::vector<std::vector<double>> partial(threads - 1, std::vector<double>(cells.size(), 0.0));
+  auto& partial = work.copies;
+  if (static_cast<int>(partial.size()) != threads - 1 ||
+      (threads > 1 && partial[0].size() != cells.size()))
+    partial.assign(threads - 1, std::vector<double>(cells.size(), 0.0));
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
@@ -89,10 +92,13 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
           }
     }
   }
-  for (const auto& copy : partial) {
+  for (auto& copy : partial) {
     const long n = static_cast<long>(cells.size());
 #pragma omp parallel for schedule(static)
-    for (long c = 0; c < n; ++c) cells[c] += copy[c];
+    for (long c = 0; c < n; ++c) {
+      cells[c] += copy[c];
+      copy[c] = 0.0;
+    }
   }
 }
 
@@ -116,9 +122,11 @@ template long cell_count<3>(const Grid<3>&);
 template long containing_cell<2>(const Grid<2>&, const Vec<2>&);
 template long containing_cell<3>(const Grid<3>&, const Vec<3>&);
 template void spread_to_cells<2>(const Grid<2>&, const std::vector<Vec<2>>&,
-                                 const std::vector<double>&, long, long, std::vector<double>&);
+                                 const std::vector<double>&, long, long, std::vector<double>&,
+                                 CellSpreadCopies&);
 template void spread_to_cells<3>(const Grid<3>&, const std::vector<Vec<3>>&,
-                                 const std::vector<double>&, long, long, std::vector<double>&);
+                                 const std::vector<double>&, long, long, std::vector<double>&,
+                                 CellSpreadCopies&);
 template Vec<2> cell_gradient_at_node<2>(const Grid<2>&, const std::vector<double>&, long);
 template Vec<3> cell_gradient_at_node<3>(const Grid<3>&, const std::vector<double>&, long);
 

@@ -16,12 +16,17 @@ long cell_count(const Grid<D>& grid);
 //! Flat index of the cell that contains x (clamped to the domain).
 template <int D>
 long containing_cell(const Grid<D>& grid, const Vec<D>& x);
+//! Work arrays of spread_to_cells: a private copy of the cell field for each thread beyond
+//! the first, kept zeroed between calls so a step allocates nothing.
+struct CellSpreadCopies {
+  std::vector<std::vector<double>> copies;
+};
 //! cells[c] += Σ_p weight[p] S(x_c − x_p) over the points [begin, end); `cells` must have
 //! cell_count() entries.
 template <int D>
 void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
                      const std::vector<double>& weight, long begin, long end,
-                     std::vector<double>& cells);
+                     std::vector<double>& cells, CellSpreadCopies& work);
 //! Gradient at grid node `node` of the cell field interpolated bilinearly (trilinearly)
 //! between cell centres (the MPM gradient operator on the dual grid, IJNME eq 28). Cells
 //! beyond a constrained face mirror the inside, beyond a free face they are empty.

@@ -25,7 +25,7 @@ class UpdateStressLast final : public Scheme {
   void advance(Stages& s, double dt) const override {
     s.to_grid(true);
     s.grid(dt);
-    s.to_points(dt);
+    s.to_points_and_gradients(dt);
     s.materials(dt);
   }
   const char* name() const override { return "usl"; }

@@ -31,6 +31,9 @@ class Stages {
   //! and the grid-update hooks; the remap's scatter shares to_points' pass over the points
   //! unless a hook changes point velocities in between.
   virtual void to_points_and_remap(double dt) = 0;
+  //! USL: to_points, and in the same pass over the points the velocity gradients of the
+  //! velocities they moved with, which the materials stage then takes.
+  virtual void to_points_and_gradients(double dt) = 0;
   //! Velocity gradients, densities, frames and each material's update.
   virtual void materials(double dt) = 0;
 };

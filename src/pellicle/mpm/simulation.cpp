@@ -211,14 +211,14 @@ void Simulation<D>::grid(double dt) {
 
 template <int D>
 void Simulation<D>::to_points(double dt) {
-  move_points(dt, false);
+  move_points(dt, {});
 }
 
 template <int D>
 void Simulation<D>::to_points_and_remap(double dt) {
   const bool separate = std::any_of(hooks_.begin(), hooks_.end(),
                                     [](const auto& hook) { return hook->sets_point_velocities(); });
-  move_points(dt, !separate);
+  move_points(dt, {.remap = !separate});
   if (separate)
     for (int k = 0; k < fields_.count(); ++k)
       transfer_->remap(points_, fields_.field(k), fields_.points(k));
@@ -226,12 +226,21 @@ void Simulation<D>::to_points_and_remap(double dt) {
 }
 
 template <int D>
-void Simulation<D>::move_points(double dt, bool remap) {
+void Simulation<D>::to_points_and_gradients(double dt) {
+  settled_gradient_.resize(points_.size());
+  if (settings_.kinematics == Kinematics::axisymmetric) settled_hoop_rate_.resize(points_.size());
+  move_points(dt, {false, settled_gradient_.data(),
+                   settled_hoop_rate_.empty() ? nullptr : settled_hoop_rate_.data()});
+  gradients_settled_ = true;
+}
+
+template <int D>
+void Simulation<D>::move_points(double dt, const PointPassExtras<D>& extras) {
   PointFailure failure;
   max_speed_ = 0.0;
   for (int k = 0; k < fields_.count() && failure.point < 0; ++k)
     max_speed_ = std::max(max_speed_, transfer_->to_points(fields_.field(k), dt, points_, failure,
-                                                           fields_.points(k), remap));
+                                                           fields_.points(k), extras));
   if (failure.point >= 0) fail(failure.point, failure.what);
   for (auto& hook : hooks_) hook->after_to_points(*this);
 }
@@ -274,15 +283,20 @@ void Simulation<D>::materials(double dt) {
       BlockValues<Mat<D>> gradient(settled_gradient_);
       BlockValues<double> hoop_rate(settled_hoop_rate_);
       if (!material.density_from_cells()) {
-        const long bad = transfer_->point_kinematics(
-            fields_.field(fields_.per_body() ? block.body : 0), dt, points_, block.begin, block.end,
-            scratch.gradient.data(), scratch.hoop_rate.data());
+        const long bad =
+            gradients_settled_
+                ? settled_continuity(dt, block.begin, block.end)
+                : transfer_->point_kinematics(fields_.field(fields_.per_body() ? block.body : 0),
+                                              dt, points_, block.begin, block.end,
+                                              scratch.gradient.data(), scratch.hoop_rate.data());
         if (bad >= 0) {
           first_bad = std::min(first_bad, bad);
           continue;
         }
-        gradient = {scratch.gradient.data(), block.begin};
-        hoop_rate = {scratch.hoop_rate.data(), block.begin};
+        if (!gradients_settled_) {
+          gradient = {scratch.gradient.data(), block.begin};
+          hoop_rate = {scratch.hoop_rate.data(), block.begin};
+        }
       }
       if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
         std::fill(points_.stress.begin() + block.begin, points_.stress.begin() + block.end,
@@ -292,9 +306,17 @@ void Simulation<D>::materials(double dt) {
       material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
     }
   }
+  gradients_settled_ = false;
   if (first_bad != std::numeric_limits<long>::max())
     fail(first_bad, "non-positive or non-finite density");
   check_materials();
+}
+
+template <int D>
+long Simulation<D>::settled_continuity(double dt, long begin, long end) {
+  return continuity_update<D>(
+      points_, settled_gradient_.data() + begin,
+      settled_hoop_rate_.empty() ? nullptr : settled_hoop_rate_.data() + begin, dt, begin, end);
 }
 
 template <int D>
@@ -308,17 +330,20 @@ void Simulation<D>::settle_cell_densities(double dt) {
   for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
     const PointBlock& block = blocks_[i];
     if (!materials_[points_.bodies[block.body].material]->density_from_cells()) continue;
-    const long bad = transfer_->point_kinematics(
-        fields_.field(fields_.per_body() ? block.body : 0), dt, points_, block.begin, block.end,
-        settled_gradient_.data() + block.begin,
-        settled_hoop_rate_.empty() ? nullptr : settled_hoop_rate_.data() + block.begin);
+    const long bad =
+        gradients_settled_
+            ? settled_continuity(dt, block.begin, block.end)
+            : transfer_->point_kinematics(
+                  fields_.field(fields_.per_body() ? block.body : 0), dt, points_, block.begin,
+                  block.end, settled_gradient_.data() + block.begin,
+                  settled_hoop_rate_.empty() ? nullptr : settled_hoop_rate_.data() + block.begin);
     if (bad >= 0) first_bad = std::min(first_bad, bad);
   }
   if (first_bad != std::numeric_limits<long>::max())
     fail(first_bad, "non-positive or non-finite density");
-  cell_quadratic_density(grid(), settings_.kinematics == Kinematics::axisymmetric,
-                         cell_density_ranges_, points_,
-                         [this](std::vector<double>& cells) { complete_cell_sums(cells); });
+  cell_quadratic_density(
+      grid(), settings_.kinematics == Kinematics::axisymmetric, cell_density_ranges_, points_,
+      [this](std::vector<double>& cells) { complete_cell_sums(cells); }, cell_density_work_);
 }
 
 template <int D>

@@ -11,6 +11,7 @@
 #include "pellicle/core/collective.hpp"
 #include "pellicle/core/observer.hpp"
 #include "pellicle/core/types.hpp"
+#include "pellicle/mpm/cell_density.hpp"
 #include "pellicle/mpm/contact/contact_model.hpp"
 #include "pellicle/mpm/enclosed_body.hpp"
 #include "pellicle/mpm/grid.hpp"
@@ -158,13 +159,16 @@ class Simulation final : private Stages {
   void grid(double dt) override;
   void to_points(double dt) override;
   void to_points_and_remap(double dt) override;
+  void to_points_and_gradients(double dt) override;
   void materials(double dt) override;
 
   double time_step();       // stage 1, with the CFL check
   void stencils();          // stage 2
   void observe(double dt);  // stage 8
-  //! to_points on every field; with `remap`, each field's pass also scatters the remap.
-  void move_points(double dt, bool remap);
+  //! to_points on every field, each field's pass with `extras`.
+  void move_points(double dt, const PointPassExtras<D>& extras);
+  //! The continuity update of points [begin, end) from the gradients to_points settled.
+  long settled_continuity(double dt, long begin, long end);
   //! The rest of the remap after its scatter: sums completed, velocities p/m, hooks.
   void convected_velocities(double dt);
   void update_frames();
@@ -195,6 +199,7 @@ class Simulation final : private Stages {
 
   //! Point ranges of fluids whose densities come from cell densities.
   std::vector<std::pair<long, long>> cell_density_ranges_;
+  CellDensityWork cell_density_work_;
   Column<Vec<D>> normal_, tangent_;  //!< membrane frames, when a material declares them
   //! Stage `materials` runs over blocks of points of one body each.
   static constexpr long kBlockPoints = 1024;
@@ -209,9 +214,11 @@ class Simulation final : private Stages {
     std::vector<double> hoop_rate;
   };
   std::vector<BlockScratch> block_scratch_;
-  //! Fluids with cell densities: their points' gradients, kept across the cell densities.
+  //! Velocity gradients (and hoop rates) computed before the materials stage: by to_points
+  //! (USL, gradients_settled_) or, for fluids with cell densities, by settle_cell_densities.
   std::vector<Mat<D>> settled_gradient_;
   std::vector<double> settled_hoop_rate_;
+  bool gradients_settled_ = false;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;
   long step_ = 0;
   std::set<std::string>

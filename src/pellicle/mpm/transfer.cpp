@@ -2,6 +2,8 @@
 //! instantiation file and one line here.
 #include "pellicle/mpm/transfer.hpp"
 
+#include <limits>
+
 #include "pellicle/mpm/shape/kernel_transfers.hpp"
 
 namespace pellicle {
@@ -18,6 +20,25 @@ const std::vector<KernelChoice<D>>& kernel_choices() {
   return kernels;
 }
 
+template <int D>
+long continuity_update(Particles<D>& points, const Mat<D>* gradient, const double* hoop_rate,
+                       double dt, long begin, long end) {
+  long first_bad = -1;
+  for (long p = begin; p < end; ++p) {
+    double volumetric = 0.0;
+    for (int i = 0; i < D; ++i) volumetric += gradient[p - begin](i, i);
+    if (hoop_rate) volumetric += hoop_rate[p - begin];
+    const double rho = points.density[p] / (1.0 + dt * volumetric);
+    points.density[p] = rho;
+    points.volume[p] = points.mass[p] / rho;
+    if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()) && first_bad < 0)
+      first_bad = p;
+  }
+  return first_bad;
+}
+
+template long continuity_update<2>(Particles<2>&, const Mat<2>*, const double*, double, long, long);
+template long continuity_update<3>(Particles<3>&, const Mat<3>*, const double*, double, long, long);
 template const std::vector<KernelChoice<2>>& kernel_choices<2>();
 template const std::vector<KernelChoice<3>>& kernel_choices<3>();
 

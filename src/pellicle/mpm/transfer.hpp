@@ -37,6 +37,26 @@ struct PointRange {
   long last(long count) const { return end < 0 ? count : end; }
 };
 
+//! What to_points also does in its pass over the points, where the scheme allows.
+template <int D>
+struct PointPassExtras {
+  //! MUSL: remap()'s scatter of the updated velocities into the grid's momentum, with the
+  //! same result as remap() after to_points.
+  bool remap = false;
+  //! USL: the velocity gradient of the velocities the points move with, L_p = Σ_i v_i ⊗ ∇N_i
+  //! (IJNME eq 13) into gradient[p], and in axisymmetry v_r/r at the new position into
+  //! hoop_rate[p]; the same values as point_kinematics() after to_points.
+  Mat<D>* gradient = nullptr;
+  double* hoop_rate = nullptr;
+};
+
+//! ρ ← ρ/(1 + Δt (tr L + v_r/r)) and V = m/ρ (IJNME eq 17) for points [begin, end), from
+//! gradient[p − begin] and hoop_rate[p − begin] (null: none). Returns the first point whose
+//! density became non-positive or non-finite, or −1.
+template <int D>
+long continuity_update(Particles<D>& points, const Mat<D>* gradient, const double* hoop_rate,
+                       double dt, long begin, long end);
+
 //! Where to_points found the first unusable point, if any.
 struct PointFailure {
   long point = -1;
@@ -76,11 +96,9 @@ class Transfer {
 
   //! Stage `to_points`: move points with the Lagrangian grid velocity and update their
   //! velocities (FLIP/PIC/blend/APIC). Returns the largest point speed; a point that leaves
-  //! the domain or becomes non-finite is reported in `failure` (the first one found). With
-  //! `remap`, the same pass over the points also does remap()'s scatter of the updated
-  //! velocities into the grid's momentum, with the same result as remap() after it.
+  //! the domain or becomes non-finite is reported in `failure` (the first one found).
   virtual double to_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
-                           PointRange range = {}, bool remap = false) = 0;
+                           PointRange range = {}, const PointPassExtras<D>& extras = {}) = 0;
 
   //! Nodes per point stencil: the kernel's width to the power D.
   virtual int stencil_size() const = 0;
@@ -106,7 +124,7 @@ class Transfer {
   //! Point kinematics of stage `materials` for points [begin, end), from the grid's current
   //! velocity field: the velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13) into
   //! gradient[p − begin], in axisymmetry the hoop rate v_r/r into hoop_rate[p − begin], and
-  //! the continuity update ρ ← ρ/(1 + Δt (tr L + v_r/r)) (eq 17) with V = m/ρ. Serial: the
+  //! continuity_update() of the points. Serial: the
   //! step calls it for blocks of points from every thread at once. Returns the first point
   //! whose density became non-positive or non-finite, or −1.
   virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points, long begin,

@@ -105,10 +105,9 @@ class TransferImpl final : public Transfer<D> {
   }
 
   double to_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
-                   PointRange range, bool remap) override {
-    if (heat_.valid()) return move_points<true, true>(grid, dt, points, failure, range, remap);
-    return apic() ? move_points<true, false>(grid, dt, points, failure, range, remap)
-                  : move_points<false, false>(grid, dt, points, failure, range, remap);
+                   PointRange range, const PointPassExtras<D>& extras) override {
+    if (extras.gradient) return to_points_with<true>(grid, dt, points, failure, range, extras);
+    return to_points_with<false>(grid, dt, points, failure, range, extras);
   }
 
   int stencil_size() const override {
@@ -159,13 +158,9 @@ class TransferImpl final : public Transfer<D> {
                         Mat<D>* gradient, double* hoop_rate) const override {
     const auto& strides = grid.strides();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
-    long first_bad = -1;
     for (long p = begin; p < end; ++p) {
-      // L = Σ v_i ∇N_iᵀ row by row (StencilRow): column 0 from Σ_a dφ₀(a) v_i, the others from
-      // Σ_a φ₀(a) v_i; the radial velocity Σ N_i v_i,r from the latter.
       const Stencil<D, Kernel> s = stencil(grid, p);
-      double L[D][D] = {};  // L[i][e] = ∂v_i/∂x_e
-      double v_radial = 0.0;
+      double L[D][D] = {}, v_radial = 0.0;
       for_each_row(s, strides, [&](const StencilRow<D>& row) {
         double sum_w[D] = {}, sum_dw[D] = {};
         for (int a = 0; a < Kernel::width; ++a) {
@@ -175,28 +170,13 @@ class TransferImpl final : public Transfer<D> {
             sum_dw[i] += s.dw[0][a] * v_node[i];
           }
         }
-        for (int i = 0; i < D; ++i) {
-          L[i][0] += row.weight * sum_dw[i];
-          for (int e = 1; e < D; ++e) L[i][e] += row.grad[e] * sum_w[i];
-        }
-        v_radial += row.weight * sum_w[0];
+        add_row_gradient(row, sum_w, sum_dw, L, v_radial);
       });
-      double volumetric = 0.0;
-      for (int i = 0; i < D; ++i) {
-        volumetric += L[i][i];
-        for (int e = 0; e < D; ++e) gradient[p - begin](i, e) = L[i][e];
-      }
-      if (axisymmetric) {
-        hoop_rate[p - begin] = v_radial / points.position[p][0];
-        volumetric += hoop_rate[p - begin];
-      }
-      const double rho = points.density[p] / (1.0 + dt * volumetric);
-      points.density[p] = rho;
-      points.volume[p] = points.mass[p] / rho;
-      if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()) && first_bad < 0)
-        first_bad = p;
+      store_gradient(L, gradient[p - begin]);
+      if (axisymmetric) hoop_rate[p - begin] = v_radial / points.position[p][0];
     }
-    return first_bad;
+    return continuity_update<D>(points, gradient, axisymmetric ? hoop_rate : nullptr, dt, begin,
+                                end);
   }
 
  private:
@@ -211,10 +191,21 @@ class TransferImpl final : public Transfer<D> {
   //! (r_out from weighted sums: Σ N_i = 1, Σ N_i (x_i − x_p) = 0). With the B-splines' C' = B D⁻¹,
   //! r_out = Σ_i N_i |v_i − v_p' − C_p'(x_i − x_p)|² ≥ 0; the gradient form's C' can give
   //! energy back (r_out < 0).
-  template <bool Apic, bool Heat>
+  template <bool Gradient>
+  double to_points_with(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
+                        PointRange range, const PointPassExtras<D>& extras) {
+    if (heat_.valid())
+      return move_points<true, true, Gradient>(grid, dt, points, failure, range, extras);
+    return apic() ? move_points<true, false, Gradient>(grid, dt, points, failure, range, extras)
+                  : move_points<false, false, Gradient>(grid, dt, points, failure, range, extras);
+  }
+
+  template <bool Apic, bool Heat, bool Gradient>
   double move_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
-                     PointRange range, bool remap) {
+                     PointRange range, const PointPassExtras<D>& extras) {
     static_assert(Apic || !Heat);
+    const bool remap = extras.remap;
+    const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     const long n = range.last(points.size());
     const auto& strides = grid.strides();
     const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
@@ -244,12 +235,13 @@ class TransferImpl final : public Transfer<D> {
         // Heat only: r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the
         // B-splines' is the constant apic_inertia h²).
         double r_in = 0.0, s_new = 0.0;
+        double L[D][D] = {}, v_radial = 0.0;  // Gradient only
         Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
         const Vec<D> v_old = points.velocity[p];
         Mat<D> c_old;
         if constexpr (Heat) c_old = affine_out[p];
         for_each_row(s, strides, [&](const StencilRow<D>& row) {
-          double sum_w[D] = {}, sum_change[D] = {}, sum_moment[D] = {};
+          double sum_w[D] = {}, sum_change[D] = {}, sum_moment[D] = {}, sum_dw[D] = {};
           for (int a = 0; a < Kernel::width; ++a) {
             const long node = row.first + a;
             const double* v_node = grid.velocity[node].data();
@@ -260,6 +252,7 @@ class TransferImpl final : public Transfer<D> {
               sum_w[i] += w * v_node[i];
               sum_change[i] += w * dv_node[i];
               if constexpr (Apic) sum_moment[i] += moment_weight * v_node[i];
+              if constexpr (Gradient) sum_dw[i] += s.dw[0][a] * v_node[i];
             }
             if constexpr (Heat) {
               const double N = w * row.weight;
@@ -282,6 +275,7 @@ class TransferImpl final : public Transfer<D> {
                     sum_w[i];
             }
           }
+          if constexpr (Gradient) add_row_gradient(row, sum_w, sum_dw, L, v_radial);
         });
         Mat<D> affine;
         if constexpr (Apic) {
@@ -307,6 +301,10 @@ class TransferImpl final : public Transfer<D> {
         // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
         // it: the mirrored ghosts cancel its normal velocity only to round-off.
         const bool inside = grid.contains(x) || grid.return_to_face(x);
+        if constexpr (Gradient) {
+          store_gradient(L, extras.gradient[p]);
+          if (axisymmetric) extras.hoop_rate[p] = v_radial / x[0];
+        }
         points.position[p] = x;
         points.velocity[p] = v;
         if constexpr (Apic) affine_out[p] = affine;
@@ -484,6 +482,22 @@ class TransferImpl final : public Transfer<D> {
         }
       }
     });
+  }
+
+  //! One row's share (StencilRow) of L = Σ_i v_i ∇N_iᵀ and of Σ_i N_i v_i,r, from the row's
+  //! sums Σ_a φ₀(a) v_i (sum_w) and Σ_a dφ₀(a) v_i (sum_dw): column 0 of L from sum_dw, the
+  //! others from sum_w.
+  static void add_row_gradient(const StencilRow<D>& row, const double* sum_w, const double* sum_dw,
+                               double (&L)[D][D], double& v_radial) {
+    for (int i = 0; i < D; ++i) {
+      L[i][0] += row.weight * sum_dw[i];
+      for (int e = 1; e < D; ++e) L[i][e] += row.grad[e] * sum_w[i];
+    }
+    v_radial += row.weight * sum_w[0];
+  }
+  static void store_gradient(const double (&L)[D][D], Mat<D>& out) {
+    for (int e = 0; e < D; ++e)
+      for (int i = 0; i < D; ++i) out(i, e) = L[i][e];
   }
 
   //! Widen [lo, hi] to the flat indices of the nodes of an anchor's stencil.

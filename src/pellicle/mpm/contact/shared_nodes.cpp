@@ -15,7 +15,7 @@ void SharedNodes<D>::colour_functions(Simulation<D>& simulation) {
     const auto& body = points.bodies[b];
     colour_[b].assign(cell_count(fields.field(b)), 0.0);
     spread_to_cells(fields.field(b), points.position, points.volume, body.begin, body.end,
-                    colour_[b]);
+                    colour_[b], spread_copies_);
     simulation.complete_cell_sums(colour_[b]);
   }
 }

@@ -82,6 +82,7 @@ class SharedNodes {
   Vec<D> outward_normal(const Grid<D>& grid, int body, long node) const;
 
   std::vector<std::vector<double>> colour_;  //!< per body, on cell centres
+  CellSpreadCopies spread_copies_;
   std::vector<Vec<D>> contact_force_;
   // Work storage, sized once for the run's bodies and threads (no allocation per step).
   std::vector<Grid<D>*> grids_;
