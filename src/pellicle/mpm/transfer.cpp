@@ -2,8 +2,6 @@
 //! instantiation file and one line here.
 #include "pellicle/mpm/transfer.hpp"
 
-#include <limits>
-
 #include "pellicle/mpm/shape/kernel_transfers.hpp"
 
 namespace pellicle {
@@ -28,11 +26,7 @@ long continuity_update(Particles<D>& points, const Mat<D>* gradient, const doubl
     double volumetric = 0.0;
     for (int i = 0; i < D; ++i) volumetric += gradient[p - begin](i, i);
     if (hoop_rate) volumetric += hoop_rate[p - begin];
-    const double rho = points.density[p] / (1.0 + dt * volumetric);
-    points.density[p] = rho;
-    points.volume[p] = points.mass[p] / rho;
-    if (!(rho > 0.0 && rho < std::numeric_limits<double>::infinity()) && first_bad < 0)
-      first_bad = p;
+    if (!continuity_point(points, p, volumetric, dt) && first_bad < 0) first_bad = p;
   }
   return first_bad;
 }

@@ -4,6 +4,7 @@
 //! implementation (transfer_impl.hpp) is compiled per kernel, so the per-point loops are
 //! inlined and there is one virtual call per stage, never one per point.
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -50,9 +51,19 @@ struct PointPassExtras {
   double* hoop_rate = nullptr;
 };
 
-//! ρ ← ρ/(1 + Δt (tr L + v_r/r)) and V = m/ρ (IJNME eq 17) for points [begin, end), from
-//! gradient[p − begin] and hoop_rate[p − begin] (null: none). Returns the first point whose
-//! density became non-positive or non-finite, or −1.
+//! ρ ← ρ/(1 + Δt ε̇_v) and V = m/ρ (IJNME eq 17) for point p, with the volumetric rate
+//! ε̇_v = tr L (+ v_r/r in axisymmetry). False when ρ became non-positive or non-finite.
+template <int D>
+inline bool continuity_point(Particles<D>& points, long p, double volumetric_rate, double dt) {
+  const double rho = points.density[p] / (1.0 + dt * volumetric_rate);
+  points.density[p] = rho;
+  points.volume[p] = points.mass[p] / rho;
+  return rho > 0.0 && rho < std::numeric_limits<double>::infinity();
+}
+
+//! continuity_point() for points [begin, end), from gradient[p − begin] and
+//! hoop_rate[p − begin] (null: none). Returns the first point whose density became
+//! non-positive or non-finite, or −1.
 template <int D>
 long continuity_update(Particles<D>& points, const Mat<D>* gradient, const double* hoop_rate,
                        double dt, long begin, long end);

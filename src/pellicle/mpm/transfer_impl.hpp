@@ -158,6 +158,7 @@ class TransferImpl final : public Transfer<D> {
                         Mat<D>* gradient, double* hoop_rate) const override {
     const auto& strides = grid.strides();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
+    long first_bad = -1;
     for (long p = begin; p < end; ++p) {
       const Stencil<D, Kernel> s = stencil(grid, p);
       double L[D][D] = {}, v_radial = 0.0;
@@ -173,10 +174,16 @@ class TransferImpl final : public Transfer<D> {
         add_row_gradient(row, sum_w, sum_dw, L, v_radial);
       });
       store_gradient(L, gradient[p - begin]);
-      if (axisymmetric) hoop_rate[p - begin] = v_radial / points.position[p][0];
+      double volumetric = 0.0;
+      for (int i = 0; i < D; ++i) volumetric += L[i][i];
+      if (axisymmetric) {
+        hoop_rate[p - begin] = v_radial / points.position[p][0];
+        volumetric += hoop_rate[p - begin];
+      }
+      // In the same loop, so the divisions overlap the next point's sums.
+      if (!continuity_point(points, p, volumetric, dt) && first_bad < 0) first_bad = p;
     }
-    return continuity_update<D>(points, gradient, axisymmetric ? hoop_rate : nullptr, dt, begin,
-                                end);
+    return first_bad;
   }
 
  private:
