@@ -28,6 +28,7 @@ class UpdateStressLast final : public Scheme {
     s.to_points_and_gradients(dt);
     s.materials(dt);
   }
+  bool keeps_gradients() const override { return true; }
   const char* name() const override { return "usl"; }
 };
 

@@ -45,6 +45,8 @@ class Scheme {
   virtual void advance(Stages& stages, double dt) const = 0;
   //! Each body may move in its own grid field (contact models).
   virtual bool allows_body_fields() const { return true; }
+  //! Its to_points keeps every point's velocity gradient for the materials stage.
+  virtual bool keeps_gradients() const { return false; }
   virtual const char* name() const = 0;
 };
 

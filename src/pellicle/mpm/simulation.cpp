@@ -449,15 +449,15 @@ double Simulation<D>::max_signal_speed() const {
 template <int D>
 std::size_t Simulation<D>::memory_estimate_bytes() const {
   // Per point: the common columns, the declared ones, the stencil anchor, and the velocity
-  // gradients kept for fluids with cell densities. Per node: the grid fields, plus one
-  // private scatter copy of mass, momentum and force per extra thread. Per thread: a block's
-  // velocity gradients.
+  // gradients kept by to_points (USL) or for fluids with cell densities. Per node: the grid fields,
+  // plus one private scatter copy of mass, momentum and force per extra thread. Per thread: a
+  // block's velocity gradients.
   const bool axisymmetric = settings_.kinematics == Kinematics::axisymmetric;
   const std::size_t gradient = sizeof(Mat<D>) + (axisymmetric ? sizeof(double) : 0);
-  const std::size_t per_point = sizeof(Vec<D>) * 2 + 3 * sizeof(double) + sizeof(Sym<D>) +
-                                sizeof(int) + points_.columns.bytes_per_point() +
-                                transfer_->stencil_bytes() +
-                                (cell_density_ranges_.empty() ? 0 : gradient);
+  const std::size_t per_point =
+      sizeof(Vec<D>) * 2 + 3 * sizeof(double) + sizeof(Sym<D>) + sizeof(int) +
+      points_.columns.bytes_per_point() + transfer_->stencil_bytes() +
+      (cell_density_ranges_.empty() && !scheme_->keeps_gradients() ? 0 : gradient);
   const std::size_t per_copy = sizeof(double) + 2 * sizeof(Vec<D>);
   const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
   return per_point * points_.size() +
