@@ -135,9 +135,9 @@ class Transfer {
   //! Point kinematics of stage `materials` for points [begin, end), from the grid's current
   //! velocity field: the velocity gradient L_p = Σ_i v_i ⊗ ∇N_i(x_p) (IJNME eq 13) into
   //! gradient[p − begin], in axisymmetry the hoop rate v_r/r into hoop_rate[p − begin], and
-  //! continuity_update() of the points. Serial: the
-  //! step calls it for blocks of points from every thread at once. Returns the first point
-  //! whose density became non-positive or non-finite, or −1.
+  //! continuity_update() of the points. Serial: the step calls it for blocks of points from
+  //! every thread at once. Returns the first point whose density became non-positive or
+  //! non-finite, or −1.
   virtual long point_kinematics(const Grid<D>& grid, double dt, Particles<D>& points, long begin,
                                 long end, Mat<D>* gradient, double* hoop_rate) const = 0;
 };

@@ -21,8 +21,8 @@
 // compressive strain near −1, so they carry no stress) rattle at up to 30 m/s among the gas;
 // one that reaches the gas's edge has nodes of its own and coasts on, and leaves the grid
 // (cell 0.4, one run in the five orders of summation tried, at t = 4.67). Simulation 1 then
-// reports where it stopped, and its checks cover the run up to there. The final pressures are reported beside the
-// thesis's (Table 5): the thesis's are grid averages that read low
+// reports where it stopped, and its checks cover the run up to there. The final pressures are
+// reported beside the thesis's (Table 5): the thesis's are grid averages that read low
 // (docs/theory/fsi-problems.md §2.5). Figures: docs/validation/README.md.
 #include <algorithm>
 #include <cmath>
@@ -102,8 +102,8 @@ Result expand(const Refinement& sim) {
       if (s->time() + 1e-12 < next) continue;
       next += 0.02;
       r.most_escaped = std::max(r.most_escaped, escaped_points(p, pair));
-      r.history.rows.push_back({s->time(), p.position[skin.begin].x(),
-                                p.position[skin.end - 1].y(), gas_pressure() / 100.0});
+      r.history.rows.push_back({s->time(), p.position[skin.begin].x(), p.position[skin.end - 1].y(),
+                                gas_pressure() / 100.0});
       e_last = s->state().total();
     }
   } catch (const NumericalError& failure) {
