@@ -238,8 +238,8 @@ expect 2 "no benchmark named 'disks' (known: two-disks," -- "$pellicle" bench --
 expect 0 '"bytes_per_point"' -- "$pellicle" bench --json --points 1000 --steps 1 --threads 1
 for c in two-disks two-disks-contact gas-box gas-in-membrane two-spheres-3d two-spheres-3d-musl \
   two-spheres-3d-flip; do
-  grep -q "\"case\": \"$c\".*\"state_bytes_per_point\": [0-9]" "$work/out" ||
-    fail "pellicle bench --json has no result for $c"
+  grep -q "\"case\": \"$c\".*\"state_bytes_per_point\": [0-9].*\"instruction_set\": \"[^\"]" \
+    "$work/out" || fail "pellicle bench --json has no result for $c"
 done
 
 echo "$failures failure(s)"

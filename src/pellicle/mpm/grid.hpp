@@ -49,6 +49,7 @@ class Grid {
   }
 
   double cell() const { return h_; }
+  double inverse_cell() const { return inv_h_; }  //!< 1/h
   const Vec<D>& lower() const { return lower_; }
   const Vec<D>& upper() const { return upper_; }
   const IVec<D>& cells() const { return cells_; }  //!< cells across the domain per axis

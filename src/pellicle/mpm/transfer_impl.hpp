@@ -159,24 +159,29 @@ class TransferImpl final : public Transfer<D> {
     const auto& strides = grid.strides();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     long first_bad = -1;
+    constexpr int W = Kernel::width, K = W * D, R = StencilRows<D, Kernel>::count;
     for (long p = begin; p < end; ++p) {
       const Stencil<D, Kernel> s = stencil(grid, p);
-      double L[D][D] = {}, v_radial = 0.0;
-      for_each_row(s, strides, [&](const StencilRow<D>& row) {
-        double sum_w[D] = {}, sum_dw[D] = {};
-        for (int a = 0; a < Kernel::width; ++a) {
-          const double* v_node = grid.velocity[row.first + a].data();
-          for (int i = 0; i < D; ++i) {
-            sum_w[i] += s.w[0][a] * v_node[i];
-            sum_dw[i] += s.dw[0][a] * v_node[i];
-          }
-        }
-        add_row_gradient(row, sum_w, sum_dw, L, v_radial);
-      });
+      // Row blocks (stencil.hpp): L's column 0 from Σ_rows weight · block, the others from
+      // Σ_rows grad_e · block.
+      const StencilRows<D, Kernel> rows(s, strides);
+      const double* v_rows[R];
+      rows.blocks(grid.velocity, v_rows);
+      double sum_v[K], sum_grad[D][K];
+      sum_blocks(
+          v_rows, [&](int r) { return rows.row[r].weight; }, sum_v);
+      for (int e = 1; e < D; ++e)
+        sum_blocks(
+            v_rows, [&](int r) { return rows.row[r].grad[e]; }, sum_grad[e]);
+      double L[D][D];  // L[e]: column e
+      contract_block<D, W>(sum_v, s.dw[0], L[0]);
+      for (int e = 1; e < D; ++e) contract_block<D, W>(sum_grad[e], s.w[0], L[e]);
       store_gradient(L, gradient[p - begin]);
       double volumetric = 0.0;
       for (int i = 0; i < D; ++i) volumetric += L[i][i];
       if (axisymmetric) {
+        double v_radial = 0.0;  // Σ N_i v_i,r
+        for (int a = 0; a < W; ++a) v_radial += s.w[0][a] * sum_v[a * D];
         hoop_rate[p - begin] = v_radial / points.position[p][0];
         volumetric += hoop_rate[p - begin];
       }
@@ -211,6 +216,9 @@ class TransferImpl final : public Transfer<D> {
   double move_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
                      PointRange range, const PointPassExtras<D>& extras) {
     static_assert(Apic || !Heat);
+    constexpr int W = Kernel::width, K = W * D, R = StencilRows<D, Kernel>::count;
+    constexpr bool bspline_moment = Kernel::apic_inertia > 0.0;
+    constexpr bool with_grad = Gradient || (Apic && !bspline_moment);
     const bool remap = extras.remap;
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     const long n = range.last(points.size());
@@ -235,65 +243,64 @@ class TransferImpl final : public Transfer<D> {
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p) {
         const Stencil<D, Kernel> s = stencil(grid, p);
-        // Row by row (StencilRow): v_L = Σ N_i v_i, Δv = Σ N_i Δv_i and for APIC either
-        // Σ N_i v_i indexᵢᵀ (B-splines: C' = (Σ N_i v_i dx_iᵀ) D⁻¹ with dx_i = (offset + index_i)
-        // h) or Σ v_i ∇N_iᵀ (the gradient form).
-        double v_lagrangian[D] = {}, v_change[D] = {}, moment[D][D] = {};  // moment[d]: column d
-        // Heat only: r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the
-        // B-splines' is the constant apic_inertia h²).
-        double r_in = 0.0, s_new = 0.0;
-        double L[D][D] = {}, v_radial = 0.0;  // Gradient only
-        Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
         const Vec<D> v_old = points.velocity[p];
-        Mat<D> c_old;
-        if constexpr (Heat) c_old = affine_out[p];
-        for_each_row(s, strides, [&](const StencilRow<D>& row) {
-          double sum_w[D] = {}, sum_change[D] = {}, sum_moment[D] = {}, sum_dw[D] = {};
-          for (int a = 0; a < Kernel::width; ++a) {
-            const long node = row.first + a;
-            const double* v_node = grid.velocity[node].data();
-            const double* dv_node = grid.velocity_change[node].data();
-            const double w = s.w[0][a];
-            const double moment_weight = Kernel::apic_inertia > 0.0 ? a * w : s.dw[0][a];
-            for (int i = 0; i < D; ++i) {
-              sum_w[i] += w * v_node[i];
-              sum_change[i] += w * dv_node[i];
-              if constexpr (Apic) sum_moment[i] += moment_weight * v_node[i];
-              if constexpr (Gradient) sum_dw[i] += s.dw[0][a] * v_node[i];
-            }
-            if constexpr (Heat) {
-              const double N = w * row.weight;
-              Vec<D> dx;
-              for (int d = 0; d < D; ++d) dx[d] = (s.offset[d] + (d == 0 ? a : row.index[d])) * h;
-              const Vec<D> v_i = grid.velocity[node], dv_i = grid.velocity_change[node];
-              r_in += N * (v_old + c_old * dx - (v_i - dv_i)).squaredNorm();
-              s_new += N * v_i.squaredNorm();
-              if constexpr (Kernel::apic_inertia == 0.0) inertia += N * dx.cwiseAbs2();
-            }
-          }
-          for (int i = 0; i < D; ++i) {
-            v_lagrangian[i] += row.weight * sum_w[i];
-            v_change[i] += row.weight * sum_change[i];
-            if constexpr (Apic) {
-              moment[0][i] += row.weight * sum_moment[i];
-              for (int e = 1; e < D; ++e)
-                moment[e][i] +=
-                    (Kernel::apic_inertia > 0.0 ? row.index[e] * row.weight : row.grad[e]) *
-                    sum_w[i];
-            }
-          }
-          if constexpr (Gradient) add_row_gradient(row, sum_w, sum_dw, L, v_radial);
-        });
+        // Row blocks (stencil.hpp): the rows' velocity blocks summed with the factors of the
+        // other axes, then contracted with the axis-0 weights: v_L = Σ N_i v_i, Δv = Σ N_i Δv_i,
+        // L = Σ v_i ∇N_iᵀ and for APIC either Σ N_i v_i indexᵢᵀ (B-splines: C' = (Σ N_i v_i
+        // dx_iᵀ) D⁻¹ with dx_i = (offset + index_i) h) or Σ v_i ∇N_iᵀ (the gradient form).
+        const StencilRows<D, Kernel> rows(s, strides);
+        const double *v_rows[R], *change_rows[R];
+        rows.blocks(grid.velocity, v_rows);
+        rows.blocks(grid.velocity_change, change_rows);
+        const auto weight = [&](int r) { return rows.row[r].weight; };
+        double sum_v[K], sum_change[K];
+        double sum_index[D][K];  // e > 0: Σ_rows index_e · weight · block (B-spline APIC)
+        double sum_grad[D][K];   // e > 0: Σ_rows grad_e · block (L, gradient-form APIC)
+        sum_blocks(v_rows, weight, sum_v);
+        sum_blocks(change_rows, weight, sum_change);
+        for (int e = 1; e < D; ++e) {
+          if constexpr (Apic && bspline_moment)
+            sum_blocks(
+                v_rows, [&](int r) { return rows.row[r].index[e] * rows.row[r].weight; },
+                sum_index[e]);
+          if constexpr (with_grad)
+            sum_blocks(
+                v_rows, [&](int r) { return rows.row[r].grad[e]; }, sum_grad[e]);
+        }
+        double v_lagrangian[D], v_change[D];
+        contract_block<D, W>(sum_v, s.w[0], v_lagrangian);
+        contract_block<D, W>(sum_change, s.w[0], v_change);
+        double L[D][D];  // L[e]: column e, with_grad only
+        if constexpr (with_grad) {
+          contract_block<D, W>(sum_v, s.dw[0], L[0]);
+          for (int e = 1; e < D; ++e) contract_block<D, W>(sum_grad[e], s.w[0], L[e]);
+        }
         Mat<D> affine;
-        if constexpr (Apic) {
+        if constexpr (Apic && bspline_moment) {
+          double moment[D][D], index_w[W];  // moment[e]: column e
+          for (int a = 0; a < W; ++a) index_w[a] = a * s.w[0][a];
+          contract_block<D, W>(sum_v, index_w, moment[0]);
+          for (int e = 1; e < D; ++e) contract_block<D, W>(sum_index[e], s.w[0], moment[e]);
           for (int e = 0; e < D; ++e)
             for (int i = 0; i < D; ++i)
-              affine(i, e) =
-                  Kernel::apic_inertia > 0.0
-                      ? inertia_scale * h * (v_lagrangian[i] * s.offset[e] + moment[e][i])
-                      : moment[e][i];
+              affine(i, e) = inertia_scale * h * (v_lagrangian[i] * s.offset[e] + moment[e][i]);
+        } else if constexpr (Apic) {
+          store_gradient(L, affine);
         }
         if constexpr (Heat) {
+          // r_in, Σ N |v_i|² and, for the gradient form, the inertia Σ N dx_d² (the B-splines'
+          // is the constant apic_inertia h²), node by node.
+          double r_in = 0.0, s_new = 0.0;
+          Vec<D> inertia = Vec<D>::Constant(Kernel::apic_inertia * h * h);
+          const Mat<D> c_old = affine_out[p];
+          for_each_node(s, strides, [&](long node, double N, const Vec<D>&, const IVec<D>& index) {
+            const Vec<D> dx =
+                (Eigen::Map<const Vec<D>>(s.offset) + index.template cast<double>()) * h;
+            const Vec<D> v_i = grid.velocity[node], dv_i = grid.velocity_change[node];
+            r_in += N * (v_old + c_old * dx - (v_i - dv_i)).squaredNorm();
+            s_new += N * v_i.squaredNorm();
+            if constexpr (Kernel::apic_inertia == 0.0) inertia += N * dx.cwiseAbs2();
+          });
           double affine_energy = 0.0;  // Σ N |C' dx|² = Σ_d D_dd |C' e_d|²
           for (int d = 0; d < D; ++d) affine_energy += inertia[d] * affine.col(d).squaredNorm();
           const double r_out = s_new - Vec<D>(v_lagrangian).squaredNorm() - affine_energy;
@@ -310,7 +317,7 @@ class TransferImpl final : public Transfer<D> {
         const bool inside = grid.contains(x) || grid.return_to_face(x);
         if constexpr (Gradient) {
           store_gradient(L, extras.gradient[p]);
-          if (axisymmetric) extras.hoop_rate[p] = v_radial / x[0];
+          if (axisymmetric) extras.hoop_rate[p] = v_lagrangian[0] / x[0];  // u_r / r
         }
         points.position[p] = x;
         points.velocity[p] = v;
@@ -417,94 +424,95 @@ class TransferImpl final : public Transfer<D> {
           [&](long node) -> const NodeFields<D>& { return target.target.at(node); });
   }
 
-  //! One point's share of the scatter, into the node fields `fields(node)` gives, row by row
-  //! (StencilRow): per node i with weight N_i and x_i − x_p = dx_i,
+  //! One point's share of the scatter, into the node fields `fields(node)` gives. Per node i
+  //! with weight N_i and x_i − x_p = dx_i:
   //!   mass     N_i m,
   //!   momentum N_i m (v + C dx_i)                  (APIC; C = 0 otherwise),
   //!   force    N_i m (g + a_body) − V σ ∇N_i        (IJNME eq 16; axisymmetric: − N_i V σ_θθ / r).
-  //! With dx_i = (offset + index_i) h the momentum is N_i (q₀ + Σ_d index_i,d m h C e_d), and with
-  //! the gradient split of a row, V σ ∇N_i = dφ₀(a) (weight V σ e₀) + φ₀(a) Σ_{e>0} grad_e V σ e_e:
-  //! each row folds its factors into a few vectors and its nodes take one multiply-add per
-  //! component and field.
+  //! Row blocks (stencil.hpp): with dx_i = (offset + index_i) h, N_i = φ₀(a)·weight and
+  //! ∇N_i = (dφ₀(a)·weight, φ₀(a)·grad_e), a row's momentum block is
+  //! weight·M₀ + Σ_{e>0} index_e·weight·M_e and its force block weight·F₀ + Σ_{e>0} grad_e·F_e,
+  //! with the per-point blocks (node a, component i)
+  //!   M₀ = φ₀(a) (m v + m h C offset + a m h C e₀)_i,   M_e = φ₀(a) m h (C e_e)_i,
+  //!   F₀ = φ₀(a) (m (g + a_body) − [i = r] V σ_θθ / r)_i − dφ₀(a) (V σ e₀)_i,   F_e = −φ₀(a) (V σ
+  //!   e_e)_i.
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly, class Fields>
   void scatter_point_into(const Particles<D>& points, long p, const Stencil<D, Kernel>& s,
                           const Vec<D>& gravity, const Grid<D>& grid, bool axisymmetric,
                           const Mat<D>* affine, Fields&& fields) const {
     constexpr bool with_momentum = WithMass || MomentumOnly;
-    constexpr int W = Kernel::width;
-    const double h = grid.cell();
+    constexpr int W = Kernel::width, K = W * D, J = Affine ? D : 1;
+    const double* w = s.w[0];
     const double m = points.mass[p];
-    double q0[D],
-        dq[D][D] = {};  // momentum per unit weight at stencil node 0; dq[e]: per node along e
-    for (int i = 0; i < D; ++i) q0[i] = m * points.velocity[p][i];
-    if constexpr (Affine) {
-      const Mat<D>& C = affine[p];
-      for (int i = 0; i < D; ++i) {
-        double c_offset = 0.0;
-        for (int d = 0; d < D; ++d) c_offset += C(i, d) * s.offset[d];
-        q0[i] += m * h * c_offset;
-        for (int e = 0; e < D; ++e) dq[e][i] = m * h * C(i, e);
+    double mass_w[W];
+    for (int a = 0; a < W; ++a) mass_w[a] = m * w[a];
+    double momentum_blocks[J][K], force_blocks[D][K];  // M_e, F_e
+    if constexpr (with_momentum) {
+      double q0[D], dq[D][D] = {};  // momentum at the stencil's node 0; dq[e]: per node along e
+      for (int i = 0; i < D; ++i) q0[i] = m * points.velocity[p][i];
+      if constexpr (Affine) {
+        const double h = grid.cell();
+        const Mat<D>& C = affine[p];
+        for (int i = 0; i < D; ++i) {
+          double c_offset = 0.0;
+          for (int d = 0; d < D; ++d) c_offset += C(i, d) * s.offset[d];
+          q0[i] += m * h * c_offset;
+          for (int e = 0; e < D; ++e) dq[e][i] = m * h * C(i, e);
+        }
       }
+      for (int a = 0; a < W; ++a)
+        for (int i = 0; i < D; ++i) {
+          momentum_blocks[0][a * D + i] = w[a] * (q0[i] + a * dq[0][i]);
+          for (int e = 1; e < J; ++e) momentum_blocks[e][a * D + i] = w[a] * dq[e][i];
+        }
     }
-    double stress_volume[D][D] = {};  // column e of V_p σ_p (in-plane part)
-    double external[D] = {}, hoop_over_r = 0.0;
     if constexpr (WithForce) {
       const Mat3 sigma = to_mat3<D>(points.stress[p]);
       const double V = points.volume[p];
-      for (int e = 0; e < D; ++e)
-        for (int i = 0; i < D; ++i) stress_volume[e][i] = V * sigma(i, e);
-      if (axisymmetric) hoop_over_r = V * sigma(2, 2) / points.position[p][0];
       const Vec<D> acceleration = gravity + points.bodies[points.body[p]].applied_acceleration;
+      double external[D];
       for (int i = 0; i < D; ++i) external[i] = m * acceleration[i];
+      if (axisymmetric) external[0] -= V * sigma(2, 2) / points.position[p][0];
+      for (int a = 0; a < W; ++a)
+        for (int i = 0; i < D; ++i) {
+          force_blocks[0][a * D + i] = w[a] * external[i] - s.dw[0][a] * (V * sigma(i, 0));
+          for (int e = 1; e < D; ++e) force_blocks[e][a * D + i] = -w[a] * (V * sigma(i, e));
+        }
     }
     for_each_row(s, grid.strides(), [&](const StencilRow<D>& row) {
-      const double row_mass = row.weight * m;
-      double momentum[D], step[D], force_w[D], force_dw[D];
-      for (int i = 0; i < D; ++i) {
-        double q = q0[i];
-        if constexpr (Affine)
-          for (int e = 1; e < D; ++e) q += row.index[e] * dq[e][i];
-        momentum[i] = row.weight * q;
-        step[i] = row.weight * dq[0][i];
-        force_dw[i] = row.weight * stress_volume[0][i];
-        double f = row.weight * external[i];
-        for (int e = 1; e < D; ++e) f -= row.grad[e] * stress_volume[e][i];
-        force_w[i] = f;
+      double momentum_factors[J], force_factors[D];
+      momentum_factors[0] = force_factors[0] = row.weight;
+      for (int e = 1; e < J; ++e) momentum_factors[e] = row.index[e] * row.weight;
+      for (int e = 1; e < D; ++e) force_factors[e] = row.grad[e];
+      const NodeFields<D>& out = fields(row.first);
+      if (&out == &fields(row.first + W - 1)) {  // the whole row goes to one target
+        if constexpr (WithMass)
+          for (int a = 0; a < W; ++a) out.mass[row.first + a] += row.weight * mass_w[a];
+        if constexpr (with_momentum)
+          add_combination(out.momentum[row.first].data(), momentum_factors, momentum_blocks);
+        if constexpr (WithForce)
+          add_combination(out.force[row.first].data(), force_factors, force_blocks);
+        return;
       }
-      if (axisymmetric) force_w[0] -= row.weight * hoop_over_r;
+      double momentum[K] = {}, force[K] = {};
+      if constexpr (with_momentum) add_combination(momentum, momentum_factors, momentum_blocks);
+      if constexpr (WithForce) add_combination(force, force_factors, force_blocks);
       for (int a = 0; a < W; ++a) {
         const long node = row.first + a;
-        const NodeFields<D>& out = fields(node);
-        const double w = s.w[0][a], dw = s.dw[0][a];
-        if constexpr (WithMass) out.mass[node] += w * row_mass;
-        if constexpr (with_momentum) {
-          double* target = out.momentum[node].data();
-          for (int i = 0; i < D; ++i) target[i] += w * momentum[i];
-          if constexpr (Affine)
-            for (int i = 0; i < D; ++i) momentum[i] += step[i];
-        }
-        if constexpr (WithForce) {
-          double* target = out.force[node].data();
-          for (int i = 0; i < D; ++i) target[i] += w * force_w[i] - dw * force_dw[i];
+        const NodeFields<D>& target = fields(node);
+        if constexpr (WithMass) target.mass[node] += row.weight * mass_w[a];
+        for (int i = 0; i < D; ++i) {
+          if constexpr (with_momentum) target.momentum[node][i] += momentum[a * D + i];
+          if constexpr (WithForce) target.force[node][i] += force[a * D + i];
         }
       }
     });
   }
 
-  //! One row's share (StencilRow) of L = Σ_i v_i ∇N_iᵀ and of Σ_i N_i v_i,r, from the row's
-  //! sums Σ_a φ₀(a) v_i (sum_w) and Σ_a dφ₀(a) v_i (sum_dw): column 0 of L from sum_dw, the
-  //! others from sum_w.
-  static void add_row_gradient(const StencilRow<D>& row, const double* sum_w, const double* sum_dw,
-                               double (&L)[D][D], double& v_radial) {
-    for (int i = 0; i < D; ++i) {
-      L[i][0] += row.weight * sum_dw[i];
-      for (int e = 1; e < D; ++e) L[i][e] += row.grad[e] * sum_w[i];
-    }
-    v_radial += row.weight * sum_w[0];
-  }
+  //! L from its columns (L[e]: column e).
   static void store_gradient(const double (&L)[D][D], Mat<D>& out) {
     for (int e = 0; e < D; ++e)
-      for (int i = 0; i < D; ++i) out(i, e) = L[i][e];
+      for (int i = 0; i < D; ++i) out(i, e) = L[e][i];
   }
 
   //! Widen [lo, hi] to the flat indices of the nodes of an anchor's stencil.

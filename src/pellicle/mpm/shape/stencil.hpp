@@ -6,7 +6,9 @@
 //! rule over the axes.
 
 #include <array>
+#include <cstring>
 #include <type_traits>
+#include <vector>
 
 #include "pellicle/core/types.hpp"
 #include "pellicle/mpm/grid.hpp"
@@ -47,7 +49,7 @@ inline StencilAnchor<D> stencil_anchor(const Kernel& kernel, const Grid<D>& grid
 template <int D, class Kernel>
 inline void expand_stencil(const Kernel& kernel, const Grid<D>& grid, const StencilAnchor<D>& a,
                            Stencil<D, Kernel>& s) {
-  const double inv_h = 1.0 / grid.cell();
+  const double inv_h = grid.inverse_cell();
   IVec<D> first;
   for (int d = 0; d < D; ++d) {
     first[d] = a.first[d];
@@ -126,5 +128,84 @@ inline void for_each_row(const Stencil<D, Kernel>& s,
                         {0.0, s.dw[1][b] * s.w[2][c], s.w[1][b] * s.dw[2][c]}});
   }
 }
+
+//! Row blocks: the W nodes of a stencil row are consecutive in storage, so their values of a
+//! nodal vector field are K = W·D consecutive doubles (node a, component i at a·D + i). A
+//! gather sums whole blocks over the rows, each scaled by a per-row factor, and contracts the
+//! sum with the 1D weights of axis 0 once per point (docs/theory/performance.md, "Rows"). The
+//! block sums run on two-lane vectors (GCC/Clang vector extensions: SSE2 on x86-64, NEON on
+//! ARM), one sum at a time over all rows so its accumulators stay in registers.
+template <int D>
+inline const double* row_block(const std::vector<Vec<D>>& field, long first) {
+  static_assert(sizeof(Vec<D>) == D * sizeof(double), "node vectors must be packed");
+  return field[first].data();
+}
+
+using DoublePair = double __attribute__((vector_size(16)));
+
+inline DoublePair load_pair(const double* p) {
+  DoublePair r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+inline void store_pair(double* p, DoublePair v) {
+  std::memcpy(p, &v, sizeof v);
+}
+
+//! sum = Σ_r factor(r) · blocks[r], over R blocks of K doubles.
+template <int K, int R, class Factor>
+inline void sum_blocks(const double* const (&blocks)[R], Factor&& factor, double (&sum)[K]) {
+  DoublePair pairs[K / 2];
+  double tail = 0.0;  // K odd: element K − 1
+  for (int j = 0; j < K / 2; ++j) pairs[j] = DoublePair{0.0, 0.0};
+  for (int r = 0; r < R; ++r) {
+    const double f = factor(r);
+    const DoublePair f2 = {f, f};
+    for (int j = 0; j < K / 2; ++j) pairs[j] += f2 * load_pair(blocks[r] + 2 * j);
+    if constexpr (K % 2 == 1) tail += f * blocks[r][K - 1];
+  }
+  for (int j = 0; j < K / 2; ++j) store_pair(sum + 2 * j, pairs[j]);
+  if constexpr (K % 2 == 1) sum[K - 1] = tail;
+}
+
+//! target[k] += Σ_j c[j] · blocks[j][k] for k < K: a row's share of a scatter, a combination
+//! of per-point blocks with the row's factors, added to the row's nodes.
+template <int K, int J>
+inline void add_combination(double* target, const double (&c)[J], const double (&blocks)[J][K]) {
+  for (int j = 0; j < K / 2; ++j) {
+    DoublePair sum = DoublePair{c[0], c[0]} * load_pair(blocks[0] + 2 * j);
+    for (int i = 1; i < J; ++i) sum += DoublePair{c[i], c[i]} * load_pair(blocks[i] + 2 * j);
+    store_pair(target + 2 * j, load_pair(target + 2 * j) + sum);
+  }
+  if constexpr (K % 2 == 1) {
+    double sum = 0.0;
+    for (int i = 0; i < J; ++i) sum += c[i] * blocks[i][K - 1];
+    target[K - 1] += sum;
+  }
+}
+
+//! out_i = Σ_a weights[a] · block[a·D + i]: a summed block contracted along axis 0.
+template <int D, int W>
+inline void contract_block(const double (&block)[W * D], const double (&weights)[W],
+                           double (&out)[D]) {
+  for (int i = 0; i < D; ++i) out[i] = 0.0;
+  for (int a = 0; a < W; ++a)
+    for (int i = 0; i < D; ++i) out[i] += weights[a] * block[a * D + i];
+}
+
+//! The rows of a stencil gathered into arrays, for sums over them (sum_blocks).
+template <int D, class Kernel>
+struct StencilRows {
+  static constexpr int count = D == 2 ? Kernel::width : Kernel::width * Kernel::width;
+  StencilRow<D> row[count];
+  StencilRows(const Stencil<D, Kernel>& s, const std::array<long, D>& strides) {
+    int r = 0;
+    for_each_row(s, strides, [&](const StencilRow<D>& one) { row[r++] = one; });
+  }
+  //! Each row's block of a nodal vector field.
+  void blocks(const std::vector<Vec<D>>& field, const double* (&out)[count]) const {
+    for (int r = 0; r < count; ++r) out[r] = row_block(field, row[r].first);
+  }
+};
 
 }  // namespace pellicle
