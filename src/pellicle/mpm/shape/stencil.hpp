@@ -47,8 +47,9 @@ inline StencilAnchor<D> stencil_anchor(const Kernel& kernel, const Grid<D>& grid
 
 //! The stencil of an anchor.
 template <int D, class Kernel>
-inline void expand_stencil(const Kernel& kernel, const Grid<D>& grid, const StencilAnchor<D>& a,
-                           Stencil<D, Kernel>& s) {
+[[gnu::always_inline]] inline void expand_stencil(const Kernel& kernel, const Grid<D>& grid,
+                                                  const StencilAnchor<D>& a,
+                                                  Stencil<D, Kernel>& s) {
   const double inv_h = grid.inverse_cell();
   IVec<D> first;
   for (int d = 0; d < D; ++d) {
@@ -134,7 +135,9 @@ inline void for_each_row(const Stencil<D, Kernel>& s,
 //! gather sums whole blocks over the rows, each scaled by a per-row factor, and contracts the
 //! sum with the 1D weights of axis 0 once per point (docs/theory/performance.md, "Rows"). The
 //! block sums run on two-lane vectors (GCC/Clang vector extensions: SSE2 on x86-64, NEON on
-//! ARM), one sum at a time over all rows so its accumulators stay in registers.
+//! ARM), one sum at a time over all rows so its accumulators stay in registers. These helpers
+//! and expand_stencil are always inlined: in the large loop bodies of the transfers GCC's
+//! inliner otherwise left some of them as calls, with their arrays passed through memory.
 template <int D>
 inline const double* row_block(const std::vector<Vec<D>>& field, long first) {
   static_assert(sizeof(Vec<D>) == D * sizeof(double), "node vectors must be packed");
@@ -154,7 +157,8 @@ inline void store_pair(double* p, DoublePair v) {
 
 //! sum = Σ_r factor(r) · blocks[r], over R blocks of K doubles.
 template <int K, int R, class Factor>
-inline void sum_blocks(const double* const (&blocks)[R], Factor&& factor, double (&sum)[K]) {
+[[gnu::always_inline]] inline void sum_blocks(const double* const (&blocks)[R], Factor&& factor,
+                                              double (&sum)[K]) {
   DoublePair pairs[K / 2];
   double tail = 0.0;  // K odd: element K − 1
   for (int j = 0; j < K / 2; ++j) pairs[j] = DoublePair{0.0, 0.0};
@@ -171,7 +175,8 @@ inline void sum_blocks(const double* const (&blocks)[R], Factor&& factor, double
 //! target[k] += Σ_j c[j] · blocks[j][k] for k < K: a row's share of a scatter, a combination
 //! of per-point blocks with the row's factors, added to the row's nodes.
 template <int K, int J>
-inline void add_combination(double* target, const double (&c)[J], const double (&blocks)[J][K]) {
+[[gnu::always_inline]] inline void add_combination(double* target, const double (&c)[J],
+                                                   const double (&blocks)[J][K]) {
   for (int j = 0; j < K / 2; ++j) {
     DoublePair sum = DoublePair{c[0], c[0]} * load_pair(blocks[0] + 2 * j);
     for (int i = 1; i < J; ++i) sum += DoublePair{c[i], c[i]} * load_pair(blocks[i] + 2 * j);
@@ -186,8 +191,8 @@ inline void add_combination(double* target, const double (&c)[J], const double (
 
 //! out_i = Σ_a weights[a] · block[a·D + i]: a summed block contracted along axis 0.
 template <int D, int W>
-inline void contract_block(const double (&block)[W * D], const double (&weights)[W],
-                           double (&out)[D]) {
+[[gnu::always_inline]] inline void contract_block(const double (&block)[W * D],
+                                                  const double (&weights)[W], double (&out)[D]) {
   for (int i = 0; i < D; ++i) out[i] = 0.0;
   for (int a = 0; a < W; ++a)
     for (int i = 0; i < D; ++i) out[i] += weights[a] * block[a * D + i];
