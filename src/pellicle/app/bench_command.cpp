@@ -93,11 +93,6 @@ struct BenchResult {
   double rate() const { return points * steps / seconds; }
 };
 
-//! The -march flag the build used (CMake option PELLICLE_ARCH), or "generic".
-const char* instruction_set() {
-  return *PELLICLE_ARCH_FLAG ? PELLICLE_ARCH_FLAG : "generic";
-}
-
 BenchResult measure(const BenchCase& bench, long points, long steps, int threads) {
   omp_set_num_threads(threads);
   const std::size_t before = status_bytes("VmRSS");
@@ -166,7 +161,7 @@ int command_bench(const BenchOptions& o) {
           "\"bytes_per_point\": %.1f, \"state_bytes_per_point\": %.1f, "
           "\"instruction_set\": \"%s\"}%s\n",
           r.bench->name, r.bench->method, r.threads, r.points, r.steps, r.seconds, r.rate(),
-          r.bytes_per_point, r.state_bytes_per_point, instruction_set(),
+          r.bytes_per_point, r.state_bytes_per_point, PELLICLE_INSTRUCTION_SET,
           i + 1 < results.size() ? "," : "");
     }
     std::printf("]\n");

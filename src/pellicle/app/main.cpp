@@ -59,8 +59,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Pellicle: MPM for membranes, gases and solids"};
   app.set_version_flag("--version", std::string("pellicle ") + PELLICLE_VERSION + " (commit " +
                                         PELLICLE_COMMIT + ", " + PELLICLE_BUILD_TYPE + " build, " +
-                                        (*PELLICLE_ARCH_FLAG ? PELLICLE_ARCH_FLAG : "generic") +
-                                        ")");
+                                        PELLICLE_INSTRUCTION_SET + ")");
   app.require_subcommand(1);
 
   RunOptions run;

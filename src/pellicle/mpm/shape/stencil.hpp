@@ -134,9 +134,9 @@ inline void for_each_row(const Stencil<D, Kernel>& s,
 //! nodal vector field are K = W·D consecutive doubles (node a, component i at a·D + i). A
 //! gather sums whole blocks over the rows, each scaled by a per-row factor, and contracts the
 //! sum with the 1D weights of axis 0 once per point (docs/theory/performance.md, "Rows"). The
-//! block sums run on two-lane vectors (GCC/Clang vector extensions: SSE2 on x86-64, NEON on
-//! ARM), one sum at a time over all rows so its accumulators stay in registers. These helpers
-//! and expand_stencil are always inlined: in the large loop bodies of the transfers GCC's
+//! block sums run on two-lane vectors (GCC/Clang vector extensions: SSE2 or AVX on x86-64,
+//! NEON on ARM), one sum at a time over all rows so its accumulators stay in registers. These
+//! helpers and expand_stencil are always inlined: in the large loop bodies of the transfers GCC's
 //! inliner otherwise left some of them as calls, with their arrays passed through memory.
 template <int D>
 inline const double* row_block(const std::vector<Vec<D>>& field, long first) {
