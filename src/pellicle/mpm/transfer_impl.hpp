@@ -313,8 +313,15 @@ class TransferImpl final : public Transfer<D> {
           v[i] = alpha * (v_old[i] + v_change[i]) + (1.0 - alpha) * v_lagrangian[i];
         }
         // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
-        // it: the mirrored ghosts cancel its normal velocity only to round-off.
-        const bool inside = grid.contains(x) || grid.return_to_face(x);
+        // it: the mirrored ghosts cancel its normal velocity only to round-off. (A copy goes
+        // to return_to_face: x itself, its address taken, would live in memory and be written
+        // piecewise and read whole, which stalls store forwarding in every step.)
+        bool inside = grid.contains(x);
+        if (!inside) {
+          Vec<D> on_face = x;
+          inside = grid.return_to_face(on_face);
+          x = on_face;
+        }
         if constexpr (Gradient) {
           store_gradient(L, extras.gradient[p]);
           if (axisymmetric) extras.hoop_rate[p] = v_lagrangian[0] / x[0];  // u_r / r
@@ -411,9 +418,11 @@ class TransferImpl final : public Transfer<D> {
 
   //! One point's share of a scatter, with the stencil `s`, into `target`.
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly>
-  void scatter_point(const Particles<D>& points, long p, const Stencil<D, Kernel>& s,
-                     const Vec<D>& gravity, const Grid<D>& grid, bool axisymmetric,
-                     const Mat<D>* affine, const ThreadTarget& target) const {
+  [[gnu::always_inline]] void scatter_point(const Particles<D>& points, long p,
+                                            const Stencil<D, Kernel>& s, const Vec<D>& gravity,
+                                            const Grid<D>& grid, bool axisymmetric,
+                                            const Mat<D>* affine,
+                                            const ThreadTarget& target) const {
     if (target.direct)
       scatter_point_into<WithMass, WithForce, Affine, MomentumOnly>(
           points, p, s, gravity, grid, axisymmetric, affine,
@@ -437,9 +446,10 @@ class TransferImpl final : public Transfer<D> {
   //!   F₀ = φ₀(a) (m (g + a_body) − [i = r] V σ_θθ / r)_i − dφ₀(a) (V σ e₀)_i,   F_e = −φ₀(a) (V σ
   //!   e_e)_i.
   template <bool WithMass, bool WithForce, bool Affine, bool MomentumOnly, class Fields>
-  void scatter_point_into(const Particles<D>& points, long p, const Stencil<D, Kernel>& s,
-                          const Vec<D>& gravity, const Grid<D>& grid, bool axisymmetric,
-                          const Mat<D>* affine, Fields&& fields) const {
+  [[gnu::always_inline]] void scatter_point_into(const Particles<D>& points, long p,
+                                                 const Stencil<D, Kernel>& s, const Vec<D>& gravity,
+                                                 const Grid<D>& grid, bool axisymmetric,
+                                                 const Mat<D>* affine, Fields&& fields) const {
     constexpr bool with_momentum = WithMass || MomentumOnly;
     constexpr int W = Kernel::width, K = W * D, J = Affine ? D : 1;
     const double* w = s.w[0];

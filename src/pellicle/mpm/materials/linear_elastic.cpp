@@ -26,18 +26,24 @@ double LinearElastic<D>::wave_modulus() const {
 
 template <int D>
 Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
-  Sym<D> ds;
-  if (this->kinematics() == Kinematics::plane_stress) {
-    // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
-    const double c = young_ / (1.0 - poisson_ * poisson_);
-    de[2] = -poisson_ / (1.0 - poisson_) * (de[0] + de[1]);
-    ds << c * (de[0] + poisson_ * de[1]), c * (poisson_ * de[0] + de[1]), 0.0, 2.0 * shear_ * de[3];
+  if constexpr (D == 2) {  // from values (kinematics.hpp: store forwarding)
+    if (this->kinematics() == Kinematics::plane_stress) {
+      // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
+      const double c = young_ / (1.0 - poisson_ * poisson_);
+      de[2] = -poisson_ / (1.0 - poisson_) * (de[0] + de[1]);
+      return Sym<2>(c * (de[0] + poisson_ * de[1]), c * (poisson_ * de[0] + de[1]), 0.0,
+                    2.0 * shear_ * de[3]);
+    }
+    const double volumetric = lambda_ * trace<D>(de);
+    return Sym<2>(2.0 * shear_ * de[0] + volumetric, 2.0 * shear_ * de[1] + volumetric,
+                  2.0 * shear_ * de[2] + volumetric, 2.0 * shear_ * de[3]);
+  } else {
+    Sym<D> ds;  // 3D is always solid kinematics
+    const double volumetric = lambda_ * trace<D>(de);
+    ds = 2.0 * shear_ * de;
+    ds.template head<3>().array() += volumetric;
     return ds;
   }
-  const double volumetric = lambda_ * trace<D>(de);
-  ds = 2.0 * shear_ * de;
-  ds.template head<3>().array() += volumetric;
-  return ds;
 }
 
 template <int D>

@@ -134,10 +134,13 @@ inline void for_each_row(const Stencil<D, Kernel>& s,
 //! nodal vector field are K = W·D consecutive doubles (node a, component i at a·D + i). A
 //! gather sums whole blocks over the rows, each scaled by a per-row factor, and contracts the
 //! sum with the 1D weights of axis 0 once per point (docs/theory/performance.md, "Rows"). The
-//! block sums run on two-lane vectors (GCC/Clang vector extensions: SSE2 or AVX on x86-64,
-//! NEON on ARM), one sum at a time over all rows so its accumulators stay in registers. These
-//! helpers and expand_stencil are always inlined: in the large loop bodies of the transfers GCC's
-//! inliner otherwise left some of them as calls, with their arrays passed through memory.
+//! block sums run on short vectors (GCC/Clang vector extensions): four lanes where the build
+//! has AVX, then two lanes (SSE2, NEON), then one double, so a block of nine doubles is two
+//! four-lane vectors and a double. Each lane sums its own element over the rows in row order,
+//! so the lane widths do not change the results. One sum at a time runs over all rows so its
+//! accumulators stay in registers. These helpers and expand_stencil are always inlined: in
+//! the large loop bodies of the transfers GCC's inliner otherwise left some of them as calls,
+//! with their arrays passed through memory.
 template <int D>
 inline const double* row_block(const std::vector<Vec<D>>& field, long first) {
   static_assert(sizeof(Vec<D>) == D * sizeof(double), "node vectors must be packed");
@@ -145,13 +148,32 @@ inline const double* row_block(const std::vector<Vec<D>>& field, long first) {
 }
 
 using DoublePair = double __attribute__((vector_size(16)));
+#if defined(__AVX__)
+using DoubleQuad = double __attribute__((vector_size(32)));
+inline constexpr bool kQuadLanes = true;
+#else
+using DoubleQuad = DoublePair;  // unused: no four-lane vectors without AVX
+inline constexpr bool kQuadLanes = false;
+#endif
 
-inline DoublePair load_pair(const double* p) {
-  DoublePair r;
+//! A block of K doubles split into lanes: `quads` four-lane vectors, then `pairs` two-lane
+//! vectors, then `single` doubles (0 or 1).
+template <int K>
+struct BlockLanes {
+  static constexpr int quads = kQuadLanes ? K / 4 : 0;
+  static constexpr int pairs = (K - 4 * quads) / 2;
+  static constexpr int pair_start = 4 * quads;
+  static constexpr int single = K - 4 * quads - 2 * pairs;
+};
+
+template <class V>
+[[gnu::always_inline]] inline V load_lanes(const double* p) {
+  V r;
   std::memcpy(&r, p, sizeof r);
   return r;
 }
-inline void store_pair(double* p, DoublePair v) {
+template <class V>
+[[gnu::always_inline]] inline void store_lanes(double* p, V v) {
   std::memcpy(p, &v, sizeof v);
 }
 
@@ -159,17 +181,22 @@ inline void store_pair(double* p, DoublePair v) {
 template <int K, int R, class Factor>
 [[gnu::always_inline]] inline void sum_blocks(const double* const (&blocks)[R], Factor&& factor,
                                               double (&sum)[K]) {
-  DoublePair pairs[K / 2];
-  double tail = 0.0;  // K odd: element K − 1
-  for (int j = 0; j < K / 2; ++j) pairs[j] = DoublePair{0.0, 0.0};
+  using L = BlockLanes<K>;
+  DoubleQuad quads[L::quads + 1];  // + 1: no zero-length arrays
+  DoublePair pairs[L::pairs + 1];
+  double single = 0.0;
+  for (int j = 0; j < L::quads; ++j) quads[j] = DoubleQuad{};
+  for (int j = 0; j < L::pairs; ++j) pairs[j] = DoublePair{};
   for (int r = 0; r < R; ++r) {
     const double f = factor(r);
-    const DoublePair f2 = {f, f};
-    for (int j = 0; j < K / 2; ++j) pairs[j] += f2 * load_pair(blocks[r] + 2 * j);
-    if constexpr (K % 2 == 1) tail += f * blocks[r][K - 1];
+    for (int j = 0; j < L::quads; ++j) quads[j] += f * load_lanes<DoubleQuad>(blocks[r] + 4 * j);
+    for (int j = 0; j < L::pairs; ++j)
+      pairs[j] += f * load_lanes<DoublePair>(blocks[r] + L::pair_start + 2 * j);
+    if constexpr (L::single == 1) single += f * blocks[r][K - 1];
   }
-  for (int j = 0; j < K / 2; ++j) store_pair(sum + 2 * j, pairs[j]);
-  if constexpr (K % 2 == 1) sum[K - 1] = tail;
+  for (int j = 0; j < L::quads; ++j) store_lanes(sum + 4 * j, quads[j]);
+  for (int j = 0; j < L::pairs; ++j) store_lanes(sum + L::pair_start + 2 * j, pairs[j]);
+  if constexpr (L::single == 1) sum[K - 1] = single;
 }
 
 //! target[k] += Σ_j c[j] · blocks[j][k] for k < K: a row's share of a scatter, a combination
@@ -177,12 +204,15 @@ template <int K, int R, class Factor>
 template <int K, int J>
 [[gnu::always_inline]] inline void add_combination(double* target, const double (&c)[J],
                                                    const double (&blocks)[J][K]) {
-  for (int j = 0; j < K / 2; ++j) {
-    DoublePair sum = DoublePair{c[0], c[0]} * load_pair(blocks[0] + 2 * j);
-    for (int i = 1; i < J; ++i) sum += DoublePair{c[i], c[i]} * load_pair(blocks[i] + 2 * j);
-    store_pair(target + 2 * j, load_pair(target + 2 * j) + sum);
-  }
-  if constexpr (K % 2 == 1) {
+  using L = BlockLanes<K>;
+  const auto add = [&]<class V>(int k, V) {
+    V sum = c[0] * load_lanes<V>(blocks[0] + k);
+    for (int i = 1; i < J; ++i) sum += c[i] * load_lanes<V>(blocks[i] + k);
+    store_lanes(target + k, load_lanes<V>(target + k) + sum);
+  };
+  for (int j = 0; j < L::quads; ++j) add(4 * j, DoubleQuad{});
+  for (int j = 0; j < L::pairs; ++j) add(L::pair_start + 2 * j, DoublePair{});
+  if constexpr (L::single == 1) {
     double sum = 0.0;
     for (int i = 0; i < J; ++i) sum += c[i] * blocks[i][K - 1];
     target[K - 1] += sum;
