@@ -11,18 +11,23 @@
 namespace pellicle {
 
 //! Δε = Δt sym(L) (eq 12), with the hoop component Δt v_r/r in axisymmetry (0 otherwise).
-//! The 2D forms build their results from values, not by writing coefficients one by one: a
-//! result written piecewise to memory and read back as one vector stalls store forwarding
-//! (docs/theory/performance.md, "Store forwarding").
+//! These helpers build their results from scalars the compiler can keep in registers, not
+//! with Eigen's comma initialiser or small matrix products: a result written piecewise to
+//! memory and read back as one vector stalls store forwarding (docs/theory/performance.md,
+//! "Store forwarding").
 template <int D>
 inline Sym<D> strain_increment(const Mat<D>& L, double hoop_rate, double dt) {
   if constexpr (D == 2) {
     return Sym<2>(dt * L(0, 0), dt * L(1, 1), dt * hoop_rate, dt * (0.5 * (L(0, 1) + L(1, 0))));
   } else {
     Sym<D> de;
-    de << L(0, 0), L(1, 1), L(2, 2), 0.5 * (L(1, 2) + L(2, 1)), 0.5 * (L(0, 2) + L(2, 0)),
-        0.5 * (L(0, 1) + L(1, 0));
-    return dt * de;
+    de[0] = dt * L(0, 0);
+    de[1] = dt * L(1, 1);
+    de[2] = dt * L(2, 2);
+    de[3] = dt * (0.5 * (L(1, 2) + L(2, 1)));
+    de[4] = dt * (0.5 * (L(0, 2) + L(2, 0)));
+    de[5] = dt * (0.5 * (L(0, 1) + L(1, 0)));
+    return de;
   }
 }
 
@@ -33,9 +38,26 @@ inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
     const double w = 0.5 * dt * (L(1, 0) - L(0, 1));  // W_yx Δt
     return Sym<2>(s[0] - 2.0 * w * s[3], s[1] + 2.0 * w * s[3], s[2], s[3] + w * (s[0] - s[1]));
   } else {
-    const Mat3 W = 0.5 * dt * (L - L.transpose());
-    const Mat3 S = to_mat3<D>(s);
-    return s + from_mat3<D>(W * S - S * W);
+    const double half_dt = 0.5 * dt;
+    double W[3][3], S[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) W[i][j] = half_dt * (L(i, j) - L(j, i));
+    const int component[3][3] = {{0, 5, 4}, {5, 1, 3}, {4, 3, 2}};  // to_mat3's layout
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) S[i][j] = s[component[i][j]];
+    // (W S − S W)_ij, each product summed over k in order
+    const auto rate = [&](int i, int j) {
+      return (W[i][0] * S[0][j] + W[i][1] * S[1][j] + W[i][2] * S[2][j]) -
+             (S[i][0] * W[0][j] + S[i][1] * W[1][j] + S[i][2] * W[2][j]);
+    };
+    Sym<D> r;
+    r[0] = s[0] + rate(0, 0);
+    r[1] = s[1] + rate(1, 1);
+    r[2] = s[2] + rate(2, 2);
+    r[3] = s[3] + 0.5 * (rate(1, 2) + rate(2, 1));
+    r[4] = s[4] + 0.5 * (rate(0, 2) + rate(2, 0));
+    r[5] = s[5] + 0.5 * (rate(0, 1) + rate(1, 0));
+    return r;
   }
 }
 

@@ -25,7 +25,7 @@ double LinearElastic<D>::wave_modulus() const {
 }
 
 template <int D>
-Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
+inline Sym<D> LinearElastic<D>::increment(Sym<D>& de) const {
   if constexpr (D == 2) {  // from values (kinematics.hpp: store forwarding)
     if (this->kinematics() == Kinematics::plane_stress) {
       // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
@@ -40,10 +40,15 @@ Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
   } else {
     Sym<D> ds;  // 3D is always solid kinematics
     const double volumetric = lambda_ * trace<D>(de);
-    ds = 2.0 * shear_ * de;
-    ds.template head<3>().array() += volumetric;
+    for (int i = 0; i < 3; ++i) ds[i] = 2.0 * shear_ * de[i] + volumetric;
+    for (int i = 3; i < 6; ++i) ds[i] = 2.0 * shear_ * de[i];
     return ds;
   }
+}
+
+template <int D>
+Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
+  return increment(de);
 }
 
 template <int D>
@@ -54,7 +59,7 @@ void LinearElastic<D>::update(const MaterialStep<D>& step) const {
   for (long p = step.begin; p < step.end; ++p) {
     const Mat<D>& L = step.velocity_gradient[p];
     Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
-    const Sym<D> ds = stress_increment(de);
+    const Sym<D> ds = increment(de);
     pts.stress[p] = jaumann_rotate<D>(pts.stress[p], L, step.dt) + ds;
     strain[p] += de;
   }
@@ -84,7 +89,7 @@ double LinearElastic<D>::strain_energy(const Particles<D>& points, long begin, l
 template <int D>
 Sym<D> LinearElastic<D>::stress_from_strain(const Sym<D>& strain) const {
   Sym<D> e = strain;
-  return stress_increment(e);
+  return increment(e);
 }
 
 template <int D>
