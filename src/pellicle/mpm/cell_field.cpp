@@ -90,7 +90,8 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
       if (interior) {
         for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
           for (int j = 0; j < 3; ++j) {
-            double* row = out + first + j * cell_strides[1] + (D == 3 ? k * cell_strides[D - 1] : 0);
+            double* row =
+                out + first + j * cell_strides[1] + (D == 3 ? k * cell_strides[D - 1] : 0);
             for (int i = 0; i < 3; ++i) {
               // The same product, in the same order, as the folding loop below.
               double value = weight[p] * w[0][i] * w[1][j];

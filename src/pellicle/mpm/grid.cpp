@@ -49,6 +49,7 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
   velocity_change.assign(node_count_, Vec<D>::Zero());
   constraints_.clear();
   mirrors_.clear();
+  group_ends_.clear();
   prescribed_.clear();
 
   // Nodes on a constrained face take the face's condition; corners collect the conditions of
@@ -98,30 +99,60 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
         idx[d] = side == 0 ? face + k : face - k;
         if (stored(idx)) mirrors_.push_back({n, flatten(idx), flips});
       }
+      group_ends_.push_back(static_cast<long>(mirrors_.size()));
     }
   }
 }
 
 template <int D>
-void Grid<D>::fold(std::vector<double>& field) const {
-  for (const auto& m : mirrors_) {
-    field[m.image] += field[m.ghost];
-    field[m.ghost] = 0.0;
+template <bool Backwards, class F>
+void Grid<D>::for_each_mirror_group(F&& f) const {
+  const int groups = static_cast<int>(group_ends_.size());
+  for (int i = 0; i < groups; ++i) {
+    const int g = Backwards ? groups - 1 - i : i;
+    f(g == 0 ? 0L : group_ends_[g - 1], group_ends_[g]);
   }
+}
+
+namespace {
+//! Below this many pairs a face's loop stays on one thread: a parallel region costs a few
+//! microseconds, about what a thread spends on a thousand pairs.
+constexpr long kParallelMirrors = 4096;
+}  // namespace
+
+template <int D>
+void Grid<D>::fold(std::vector<double>& field) const {
+  for_each_mirror_group([&](long begin, long end) {
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
+    for (long i = begin; i < end; ++i) {
+      const Mirror& m = mirrors_[i];
+      field[m.image] += field[m.ghost];
+      field[m.ghost] = 0.0;
+    }
+  });
 }
 
 template <int D>
 void Grid<D>::fold(std::vector<Vec<D>>& field) const {
-  for (const auto& m : mirrors_) {
-    field[m.image] += reflect(field[m.ghost], m.flips);
-    field[m.ghost].setZero();
-  }
+  for_each_mirror_group([&](long begin, long end) {
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
+    for (long i = begin; i < end; ++i) {
+      const Mirror& m = mirrors_[i];
+      field[m.image] += reflect(field[m.ghost], m.flips);
+      field[m.ghost].setZero();
+    }
+  });
 }
 
 template <int D>
 void Grid<D>::mirror(std::vector<Vec<D>>& field) const {
-  for (auto m = mirrors_.rbegin(); m != mirrors_.rend(); ++m)
-    field[m->ghost] = reflect(field[m->image], m->flips);
+  for_each_mirror_group<true>([&](long begin, long end) {
+#pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
+    for (long i = begin; i < end; ++i) {
+      const Mirror& m = mirrors_[i];
+      field[m.ghost] = reflect(field[m.image], m.flips);
+    }
+  });
 }
 
 template <int D>

@@ -160,6 +160,14 @@ class Grid {
   FaceConditions<D> faces_;
   std::vector<Constraint> constraints_;
   std::vector<Mirror> mirrors_;  //!< in axis order; mirror() walks them backwards
+  //! mirrors_ in groups of one face each: [group_ends_[g − 1], group_ends_[g]). Within a
+  //! group every ghost and every image appears once and no image is a ghost, so a group's
+  //! pairs may be folded or mirrored in any order; the groups keep theirs (corner ghosts
+  //! reach the interior through the faces of two axes).
+  std::vector<long> group_ends_;
+  //! f(begin, end) for each group of mirrors_, in order or (Backwards) in reverse order.
+  template <bool Backwards = false, class F>
+  void for_each_mirror_group(F&& f) const;
   std::vector<std::pair<long, Vec<D>>> prescribed_;
 };
 
