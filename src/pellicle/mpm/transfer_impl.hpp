@@ -472,7 +472,10 @@ class TransferImpl final : public Transfer<D> {
       }
       for (int a = 0; a < W; ++a)
         for (int i = 0; i < D; ++i) {
-          momentum_blocks[0][a * D + i] = w[a] * (q0[i] + a * dq[0][i]);
+          if constexpr (Affine)
+            momentum_blocks[0][a * D + i] = w[a] * (q0[i] + a * dq[0][i]);
+          else
+            momentum_blocks[0][a * D + i] = w[a] * q0[i];
           for (int e = 1; e < J; ++e) momentum_blocks[e][a * D + i] = w[a] * dq[e][i];
         }
     }

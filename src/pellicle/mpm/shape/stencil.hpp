@@ -223,8 +223,8 @@ template <int K, int J>
 template <int D, int W>
 [[gnu::always_inline]] inline void contract_block(const double (&block)[W * D],
                                                   const double (&weights)[W], double (&out)[D]) {
-  for (int i = 0; i < D; ++i) out[i] = 0.0;
-  for (int a = 0; a < W; ++a)
+  for (int i = 0; i < D; ++i) out[i] = weights[0] * block[i];
+  for (int a = 1; a < W; ++a)
     for (int i = 0; i < D; ++i) out[i] += weights[a] * block[a * D + i];
 }
 
