@@ -69,4 +69,19 @@ inline double trace(const Sym<D>& s) {
   return s[0] + s[1] + s[2];
 }
 
+//! s + value·I: `value` added to the three normal components. Built from the components, not
+//! by updating `head<3>()` in place: a tensor written in pieces and then read as one vector
+//! stalls store forwarding (docs/theory/performance.md, "Store forwarding").
+template <int D>
+inline Sym<D> add_to_normal(const Sym<D>& s, double value) {
+  if constexpr (D == 2) {
+    return Sym<2>(s[0] + value, s[1] + value, s[2] + value, s[3]);
+  } else {
+    Sym<D> r;
+    for (int i = 0; i < 3; ++i) r[i] = s[i] + value;
+    for (int i = 3; i < 6; ++i) r[i] = s[i];
+    return r;
+  }
+}
+
 }  // namespace pellicle

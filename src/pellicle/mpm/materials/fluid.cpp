@@ -54,8 +54,7 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
     strain[p] += de;
 
     // Viscous stress 2μ D' and artificial viscosity q at the new rate (eqs 4.1, 4.11–4.12).
-    Sym<D> deviatoric = de;
-    deviatoric.template head<3>().array() -= dv / 3.0;
+    const Sym<D> deviatoric = add_to_normal<D>(de, -(dv / 3.0));
     const Sym<D> viscous = (2.0 * viscosity_.shear * inv_dt) * deviatoric;
     const double c_old = std::sqrt(eos_.sound_speed_squared(rho_old, p_old));
     const double q = artificial_viscosity(rho_new, c_old, dv * inv_dt, step.cell);
@@ -70,9 +69,7 @@ void Fluid<D, Eos>::update(const MaterialStep<D>& step) const {
     energy[p] = e_new;
     const double p_new = p_cold + gruneisen * rho_new * e_new;
 
-    Sym<D> sigma = viscous;
-    sigma.template head<3>().array() -= p_new + q;
-    pts.stress[p] = sigma;
+    pts.stress[p] = add_to_normal<D>(viscous, -(p_new + q));
   }
 }
 

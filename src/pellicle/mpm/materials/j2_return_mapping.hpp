@@ -53,8 +53,7 @@ inline double j2_yield_stress(const J2Constants& c, double plastic_strain) {
 template <int D>
 inline double von_mises_stress(const Sym<D>& stress) {
   const double mean = trace<D>(stress) / 3.0;
-  Sym<D> s = stress;
-  s.template head<3>().array() -= mean;
+  const Sym<D> s = add_to_normal<D>(stress, -mean);
   return std::sqrt(1.5 * contract<D>(s, s));
 }
 
@@ -76,21 +75,19 @@ namespace j2_detail {
 template <int D>
 J2State<D> radial_return(const J2State<D>& old, const Sym<D>& de, const J2Constants& c) {
   const double G = c.shear();
-  Sym<D> trial = old.stress + 2.0 * G * de;  // (P3)
-  trial.template head<3>().array() += c.lambda() * trace<D>(de);
+  const Sym<D> trial =
+      add_to_normal<D>(old.stress + 2.0 * G * de, c.lambda() * trace<D>(de));  // (P3)
 
   const double mean = trace<D>(trial) / 3.0;
-  Sym<D> s = trial;  // deviator s_tr (P4)
-  s.template head<3>().array() -= mean;
+  Sym<D> s = add_to_normal<D>(trial, -mean);  // deviator s_tr (P4)
   const double q_trial = std::sqrt(1.5 * contract<D>(s, s));
   const double f = q_trial - j2_yield_stress(c, old.plastic_strain);  // (P5)
   if (f <= 0.0) return {trial, old.plastic_strain};
 
   // f > 0 implies q_trial > σ_y > 0, and 3G + H > 0 even for H = 0.
-  const double dgamma = f / (3.0 * G + c.hardening);  // (P10)
-  s *= 1.0 - 3.0 * G * dgamma / q_trial;              // (P9)
-  s.template head<3>().array() += mean;               // pressure unchanged (P9)
-  return {s, old.plastic_strain + dgamma};
+  const double dgamma = f / (3.0 * G + c.hardening);                // (P10)
+  s *= 1.0 - 3.0 * G * dgamma / q_trial;                            // (P9)
+  return {add_to_normal<D>(s, mean), old.plastic_strain + dgamma};  // pressure unchanged (P9)
 }
 
 //! Plane stress (σ_zz = 0) in 2D: plane-stress predictor (P11), return (P12)–(P13) with the
