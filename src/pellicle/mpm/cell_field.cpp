@@ -80,40 +80,26 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
       double w[D][3], dw[3];
       int base[D];
       for (int d = 0; d < D; ++d) base[d] = quadratic_bspline(u[d], w[d], dw);
-      // Away from the faces no cell folds: the flat indices follow from the first cell's.
-      bool interior = true;
-      long first = 0;
-      for (int d = 0; d < D; ++d) {
-        interior = interior && base[d] >= 0 && base[d] + 2 < grid.cells()[d];
-        first += base[d] * cell_strides[d];
-      }
-      if (interior) {
-        for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
-          for (int j = 0; j < 3; ++j) {
-            double* row =
-                out + first + j * cell_strides[1] + (D == 3 ? k * cell_strides[D - 1] : 0);
-            for (int i = 0; i < 3; ++i) {
-              // The same product, in the same order, as the folding loop below.
-              double value = weight[p] * w[0][i] * w[1][j];
-              if constexpr (D == 3) value *= w[D - 1][k];
-              row[i] += value;
-            }
-          }
-        continue;
-      }
+      // Each axis's three cells folded at the faces once per point (offset along the flat
+      // index; −1 beyond a free face), not once per cell of the 3^D.
+      long axis_offset[D][3];
+      for (int d = 0; d < D; ++d)
+        for (int i = 0; i < 3; ++i) {
+          const int c = fold_cell(grid, d, base[d] + i);
+          axis_offset[d][i] = c < 0 ? -1 : c * cell_strides[d];
+        }
       for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
-        for (int j = 0; j < 3; ++j)
+        for (int j = 0; j < 3; ++j) {
+          const long across = D == 3 ? axis_offset[D - 1][k] : 0;
+          if (axis_offset[1][j] < 0 || across < 0) continue;
+          const long row = axis_offset[1][j] + across;
           for (int i = 0; i < 3; ++i) {
-            const int offset[3] = {i, j, k};
-            int index[D];
-            double value = weight[p];
-            for (int d = 0; d < D; ++d) {
-              index[d] = base[d] + offset[d];
-              value *= w[d][offset[d]];
-            }
-            const long flat = fold_flat(grid, index);
-            if (flat >= 0) out[flat] += value;
+            if (axis_offset[0][i] < 0) continue;
+            double value = weight[p] * w[0][i] * w[1][j];  // Π_d w_d, multiplied in axis order
+            if constexpr (D == 3) value *= w[D - 1][k];
+            out[row + axis_offset[0][i]] += value;
           }
+        }
     }
   }
   for (auto& copy : partial) {

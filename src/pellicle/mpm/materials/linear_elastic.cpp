@@ -26,24 +26,17 @@ double LinearElastic<D>::wave_modulus() const {
 
 template <int D>
 inline Sym<D> LinearElastic<D>::increment(Sym<D>& de) const {
-  if constexpr (D == 2) {  // from values (kinematics.hpp: store forwarding)
+  if constexpr (D == 2) {
     if (this->kinematics() == Kinematics::plane_stress) {
       // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
       const double c = young_ / (1.0 - poisson_ * poisson_);
       de[2] = -poisson_ / (1.0 - poisson_) * (de[0] + de[1]);
       return Sym<2>(c * (de[0] + poisson_ * de[1]), c * (poisson_ * de[0] + de[1]), 0.0,
-                    2.0 * shear_ * de[3]);
+                    2.0 * shear_ * de[3]);  // from values (kinematics.hpp: store forwarding)
     }
-    const double volumetric = lambda_ * trace<D>(de);
-    return Sym<2>(2.0 * shear_ * de[0] + volumetric, 2.0 * shear_ * de[1] + volumetric,
-                  2.0 * shear_ * de[2] + volumetric, 2.0 * shear_ * de[3]);
-  } else {
-    Sym<D> ds;  // 3D is always solid kinematics
-    const double volumetric = lambda_ * trace<D>(de);
-    for (int i = 0; i < 3; ++i) ds[i] = 2.0 * shear_ * de[i] + volumetric;
-    for (int i = 3; i < 6; ++i) ds[i] = 2.0 * shear_ * de[i];
-    return ds;
   }
+  // T : Δε of eq 14 for the isotropic law, 2μ Δε + λ tr(Δε) I (3D is always solid).
+  return add_to_normal<D>(2.0 * shear_ * de, lambda_ * trace<D>(de));
 }
 
 template <int D>
