@@ -34,10 +34,15 @@ std::vector<RankOrderSums::Neighbour> in_window(const std::vector<SharedWith>& p
 template <int D>
 HaloSums<D>::HaloSums(const Communicator& world, const std::vector<SharedWith>& plan,
                       const Grid<D>& window)
-    : sums_(world, in_window(plan, window)) {}
+    : sums_(world, in_window(plan, window)) {
+  for (const auto& e : plan)
+    for (long g : e.indices) shared_.push_back(storage_index(window, g));
+}
 
 template <int D>
 void HaloSums<D>::complete(Grid<D>& grid, ScatteredFields fields) {
+  // The neighbours' shares may land where this rank's points did not reach.
+  grid.mark_live(shared_.data(), shared_.data() + shared_.size());
   arrays_.clear();
   if (fields.mass) arrays_.push_back({grid.mass.data(), 1});
   if (fields.momentum) arrays_.push_back({grid.momentum.data()->data(), D});

@@ -30,6 +30,7 @@ class HaloSums {
  private:
   RankOrderSums sums_;
   std::vector<RankOrderSums::Array> arrays_;
+  std::vector<long> shared_;  //!< the nodes shared with any neighbour, as storage indices
 };
 
 extern template class HaloSums<2>;

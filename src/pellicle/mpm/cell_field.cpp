@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "pellicle/core/bspline.hpp"
 
@@ -69,11 +70,13 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
   if (static_cast<int>(partial.size()) != threads - 1 ||
       (threads > 1 && partial[0].size() != cells.size()))
     partial.assign(threads - 1, std::vector<double>(cells.size(), 0.0));
+  work.written.assign(partial.size(), {0, -1});
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
     double* out = t == 0 ? cells.data() : partial[t - 1].data();
-#pragma omp for schedule(static)
+    long first = std::numeric_limits<long>::max(), last = -1;  // cells this thread writes
+#pragma omp for schedule(static) nowait
     for (long p = begin; p < end; ++p) {
       // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
       const Vec<D> u = (positions[p] - grid.lower()) * inv_h - Vec<D>::Constant(0.5);
@@ -83,11 +86,20 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
       // Each axis's three cells folded at the faces once per point (offset along the flat
       // index; −1 beyond a free face), not once per cell of the 3^D.
       long axis_offset[D][3];
-      for (int d = 0; d < D; ++d)
+      long lowest = 0, highest = 0;  // the first and last cell written
+      bool writes = true;
+      for (int d = 0; d < D; ++d) {
+        long low = std::numeric_limits<long>::max(), high = -1;
         for (int i = 0; i < 3; ++i) {
           const int c = fold_cell(grid, d, base[d] + i);
           axis_offset[d][i] = c < 0 ? -1 : c * cell_strides[d];
+          if (c >= 0)
+            low = std::min(low, axis_offset[d][i]), high = std::max(high, axis_offset[d][i]);
         }
+        writes = writes && high >= 0;
+        if (writes) lowest += low, highest += high;
+      }
+      if (writes) first = std::min(first, lowest), last = std::max(last, highest);
       for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
         for (int j = 0; j < 3; ++j) {
           const long across = D == 3 ? axis_offset[D - 1][k] : 0;
@@ -101,11 +113,14 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
           }
         }
     }
+    if (t > 0) work.written[t - 1] = {first, last};
   }
-  for (auto& copy : partial) {
-    const long n = static_cast<long>(cells.size());
+  // Each copy is zero outside the cells its thread wrote to.
+  for (std::size_t t = 0; t < partial.size(); ++t) {
+    std::vector<double>& copy = partial[t];
+    const auto [first, last] = work.written[t];
 #pragma omp parallel for schedule(static)
-    for (long c = 0; c < n; ++c) {
+    for (long c = first; c <= last; ++c) {
       cells[c] += copy[c];
       copy[c] = 0.0;
     }

@@ -5,6 +5,7 @@
 //! A point's weight spread beyond a wall or symmetry face is reflected into the mirror cell;
 //! beyond a free face it is lost.
 
+#include <utility>
 #include <vector>
 
 #include "pellicle/mpm/grid.hpp"
@@ -20,6 +21,7 @@ long containing_cell(const Grid<D>& grid, const Vec<D>& x);
 //! the first, kept zeroed between calls so a step allocates nothing.
 struct CellSpreadCopies {
   std::vector<std::vector<double>> copies;
+  std::vector<std::pair<long, long>> written;  //!< per copy, the cells a spread wrote to
 };
 //! cells[c] += Σ_p weight[p] S(x_c − x_p) over the points [begin, end); `cells` must have
 //! cell_count() entries.

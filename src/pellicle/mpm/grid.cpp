@@ -51,6 +51,8 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
   mirrors_.clear();
   group_ends_.clear();
   prescribed_.clear();
+  live_.assign(row_count(), NodeSpan{0, nodes_[0] - 1});
+  live_parts_.clear();
 
   // Nodes on a constrained face take the face's condition; corners collect the conditions of
   // every face they touch.
@@ -156,11 +158,118 @@ void Grid<D>::mirror(std::vector<Vec<D>>& field) const {
 }
 
 template <int D>
+void Grid<D>::restart_live(const std::vector<NodeSpan>& next) {
+  const bool given = next.size() == live_.size();
+  const NodeSpan whole{0, nodes_[0] - 1};
+  const long width = nodes_[0];
+  const auto zero_velocities = [&](long begin, long end) {
+    for (long n = begin; n <= end; ++n) {
+      velocity[n].setZero();
+      velocity_change[n].setZero();
+    }
+  };
+  const long rows = row_count();
+#pragma omp parallel for schedule(static)
+  for (long r = 0; r < rows; ++r) {
+    const NodeSpan now = live_[r];
+    if (now.empty()) continue;
+    const long base = r * width;
+    for (long n = base + now.first; n <= base + now.last; ++n) {
+      mass[n] = 0.0;
+      momentum[n].setZero();
+      force[n].setZero();
+    }
+    // The velocities stay wherever the next live set holds them: the update rewrites them.
+    const NodeSpan kept = given ? next[r] : whole;
+    if (kept.empty()) {
+      zero_velocities(base + now.first, base + now.last);
+    } else {
+      zero_velocities(base + now.first, base + std::min(now.last, kept.first - 1));
+      zero_velocities(base + std::max(now.first, kept.last + 1), base + now.last);
+    }
+  }
+  if (given)
+    live_ = next;
+  else
+    live_.assign(rows, whole);
+  close_live();
+}
+
+template <int D>
+void Grid<D>::mark_live(const long* first, const long* last) {
+  if (first == last) return;
+  for (const long* n = first; n != last; ++n) add_live(*n);
+  close_live();
+}
+
+template <int D>
+void Grid<D>::prescribe(const std::pair<long, Vec<D>>* first, const std::pair<long, Vec<D>>* last) {
+  if (first == last) return;
+  for (const auto* p = first; p != last; ++p) add_live(p->first);
+  close_live();
+  prescribed_.insert(prescribed_.end(), first, last);
+}
+
+template <int D>
+void Grid<D>::close_live() {
+  // A mirror pair is a ghost f − k and its image f + k (k = 1..kGhost) across a constrained
+  // face f, along one axis. Along axis 0 both lie in one row: a span reaching into the face's
+  // band takes the band part's reflection. Along a higher axis the pair's rows take the
+  // smallest span holding both. Repeated until nothing grows (corner ghosts: two axes).
+  const int width = nodes_[0];
+  const long rows = row_count();
+  bool grew = true;
+  while (grew) {
+    grew = false;
+    for (int d = 0; d < D; ++d) {
+      for (int side = 0; side < 2; ++side) {
+        if (faces_[2 * d + side] == FaceCondition::free) continue;
+        const int f = (side == 0 ? kGhost : kGhost + cells_[d]) - first_[d];
+        if (d == 0) {
+          for (NodeSpan& s : live_) {
+            const int a = std::max(s.first, f - kGhost), b = std::min(s.last, f + kGhost);
+            if (s.empty() || a > b) continue;
+            const int ra = std::max(2 * f - b, 0), rb = std::min(2 * f - a, width - 1);
+            if (ra < s.first || rb > s.last) s.add(ra, rb), grew = true;
+          }
+          continue;
+        }
+        // Rows with index j along axis d: r = (outer · nodes_[d] + j) · step + inner.
+        const long step = strides_[d] / width, outers = rows / (step * nodes_[d]);
+        for (int j = std::max(f - kGhost, 0); j < f; ++j) {
+          const int image = 2 * f - j;
+          if (j >= nodes_[d] || image >= nodes_[d]) continue;
+          for (long outer = 0; outer < outers; ++outer)
+            for (long inner = 0; inner < step; ++inner) {
+              NodeSpan& ghost = live_[(outer * nodes_[d] + j) * step + inner];
+              NodeSpan& inside = live_[(outer * nodes_[d] + image) * step + inner];
+              NodeSpan both = ghost;
+              both.add(inside.first, inside.last);
+              if (!(both == ghost) || !(both == inside)) ghost = inside = both, grew = true;
+            }
+        }
+      }
+    }
+  }
+  // Rows shared among the threads by live node counts, for for_each_live().
+  const int threads = omp_get_max_threads();
+  long total = 0;
+  for (const NodeSpan& s : live_) total += s.size();
+  live_parts_.assign(threads + 1, rows);
+  live_parts_[0] = 0;
+  long seen = 0;
+  int t = 1;
+  for (long r = 0; r < rows && t < threads; ++r) {
+    seen += live_[r].size();
+    while (t < threads && seen * threads >= total * t) live_parts_[t++] = r + 1;
+  }
+}
+
+template <int D>
 void Grid<D>::integrate(double dt) {
   constrain(momentum);
   constrain(force);
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < node_count_; ++n) {
+  for_each_live([&](long n) {
     if (mass[n] > 0.0) {
       const double inv_m = 1.0 / mass[n];
       velocity_change[n] = (dt * inv_m) * force[n];
@@ -169,7 +278,7 @@ void Grid<D>::integrate(double dt) {
       velocity_change[n].setZero();
       velocity[n].setZero();
     }
-  }
+  });
   for (const auto& [n, v] : prescribed_) {
     velocity_change[n] = v - (mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : v);
     velocity[n] = v;
@@ -193,9 +302,9 @@ bool Grid<D>::return_to_face(Vec<D>& x) const {
 template <int D>
 void Grid<D>::velocities_from_momentum() {
   constrain(momentum);
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < node_count_; ++n)
+  for_each_live([&](long n) {
     velocity[n] = mass[n] > 0.0 ? Vec<D>(momentum[n] / mass[n]) : Vec<D>::Zero();
+  });
   for (const auto& [n, v] : prescribed_) velocity[n] = v;
   mirror(velocity);
 }

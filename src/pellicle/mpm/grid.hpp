@@ -2,8 +2,13 @@
 //! The background Cartesian grid: node arrays (structure of arrays), index math and the
 //! boundary conditions on its faces. All index arithmetic lives here.
 
+#include <omp.h>
+
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "pellicle/core/types.hpp"
@@ -21,6 +26,17 @@ enum class FaceCondition : std::uint8_t {
 //! Face order: x-min, x-max, y-min, y-max[, z-min, z-max].
 template <int D>
 using FaceConditions = std::array<FaceCondition, 2 * D>;
+
+//! Nodes first..last of one row of the grid's storage (a row: the nodes along axis 0 at fixed
+//! higher indices), as offsets within the row; empty when last < first.
+struct NodeSpan {
+  int first = std::numeric_limits<int>::max(), last = std::numeric_limits<int>::min();
+  bool empty() const { return last < first; }
+  long size() const { return empty() ? 0 : long{last} - first + 1; }
+  //! Grow to the smallest span holding this one and nodes a..b.
+  void add(int a, int b) { first = std::min(first, a), last = std::max(last, b); }
+  bool operator==(const NodeSpan&) const = default;
+};
 
 template <int D>
 class Grid {
@@ -112,13 +128,62 @@ class Grid {
   //! Nodes that take a prescribed velocity (rigid bodies, boundary conditions), added every
   //! step after `to_grid` clears them, and applied by integrate() and
   //! velocities_from_momentum(). A node prescribed twice takes the later velocity.
-  void prescribe(const std::pair<long, Vec<D>>* first, const std::pair<long, Vec<D>>* last) {
-    prescribed_.insert(prescribed_.end(), first, last);
-  }
+  void prescribe(const std::pair<long, Vec<D>>* first, const std::pair<long, Vec<D>>* last);
   void prescribe(const std::vector<std::pair<long, Vec<D>>>& nodes) {
     prescribe(nodes.data(), nodes.data() + nodes.size());
   }
   void clear_prescribed() { prescribed_.clear(); }
+
+  //! Live nodes (docs/theory/performance.md, "Live nodes"): per row of the storage one span,
+  //! outside which every node field is zero, so the passes over whole fields visit the spans
+  //! only. Each step's first scatter restarts them from the spans its points' stencils reach;
+  //! whatever else writes a node marks it first (prescribe() does). The spans are closed under
+  //! the ghost mirrors, so fold() and mirror() stay inside them. A new grid is live everywhere.
+  //!
+  //! Zero mass, momentum and force on the live nodes, and the velocities on those `next` does
+  //! not hold; then `next` (one span per row; any other size: every node) is the live set.
+  void restart_live(const std::vector<NodeSpan>& next);
+  //! Add nodes to the live set (their fields are zero until written).
+  void mark_live(const long* first, const long* last);
+  const std::vector<NodeSpan>& live() const { return live_; }
+  long row_count() const { return node_count_ / nodes_[0]; }
+  //! Stored row holding the nodes (·, j[, k]) given as grid indices of the higher axes.
+  long row_of(const int* index) const {
+    long r = index[D - 1] - first_[D - 1];
+    for (int d = D - 2; d >= 1; --d) r = r * nodes_[d] + (index[d] - first_[d]);
+    return r;
+  }
+  //! f(node) for every live node, in parallel: each thread a run of rows of about equal
+  //! live node counts. Call outside a parallel region.
+  template <class F>
+  void for_each_live(F&& f) const {
+#pragma omp parallel
+    for_each_live_of_thread(f);
+  }
+  //! f(node) for this thread's share of the live nodes; every thread of a parallel region
+  //! calls it (a worksharing loop over the live nodes).
+  template <class F>
+  void for_each_live_of_thread(F&& f) const {
+    const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+    const long rows = row_count(), width = nodes_[0];
+    const bool shared = static_cast<int>(live_parts_.size()) == threads + 1;
+    const long r0 = shared ? live_parts_[t] : rows * t / threads;
+    const long r1 = shared ? live_parts_[t + 1] : rows * (t + 1) / threads;
+    for (long r = r0; r < r1; ++r) {
+      const long begin = r * width + live_[r].first, end = r * width + live_[r].last;
+      for (long n = begin; n <= end; ++n) f(n);
+    }
+  }
+  //! Zero a node field on the live nodes (outside them it is zero already).
+  template <class T>
+  void zero_live(std::vector<T>& field) const {
+    for_each_live([&](long n) {
+      if constexpr (std::is_same_v<T, double>)
+        field[n] = 0.0;
+      else
+        field[n].setZero();
+    });
+  }
 
   //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
   void constrain(std::vector<Vec<D>>& field) const {
@@ -169,6 +234,15 @@ class Grid {
   template <bool Backwards = false, class F>
   void for_each_mirror_group(F&& f) const;
   std::vector<std::pair<long, Vec<D>>> prescribed_;
+  std::vector<NodeSpan> live_;    //!< one per row
+  std::vector<long> live_parts_;  //!< threads' row runs: [live_parts_[t], live_parts_[t + 1])
+  //! Grow the live spans until every mirror pair has both nodes live or neither, then share
+  //! the rows out among the threads.
+  void close_live();
+  void add_live(long node) {
+    const int x = static_cast<int>(node % nodes_[0]);
+    live_[node / nodes_[0]].add(x, x);
+  }
 };
 
 extern template class Grid<2>;

@@ -5,9 +5,14 @@ namespace pellicle {
 template <int D>
 void GridFields<D>::sum_to_centre_of_mass(bool mass, bool forces) {
   if (!per_body()) return;
-  const long nodes = centre_of_mass_.node_count();
-#pragma omp parallel for schedule(static)
-  for (long n = 0; n < nodes; ++n) {
+  if (mass) {  // the step's first sums: the bodies' live nodes are the sum's
+    live_sum_ = body_grids_[0].live();
+    for (const auto& g : body_grids_)
+      for (std::size_t r = 0; r < live_sum_.size(); ++r)
+        live_sum_[r].add(g.live()[r].first, g.live()[r].last);
+    centre_of_mass_.restart_live(live_sum_);
+  }
+  centre_of_mass_.for_each_live([&](long n) {
     double m = 0.0;
     Vec<D> momentum = Vec<D>::Zero(), force = Vec<D>::Zero();
     for (const auto& g : body_grids_) {
@@ -18,7 +23,7 @@ void GridFields<D>::sum_to_centre_of_mass(bool mass, bool forces) {
     if (mass) centre_of_mass_.mass[n] = m;
     centre_of_mass_.momentum[n] = momentum;
     if (forces) centre_of_mass_.force[n] = force;
-  }
+  });
 }
 
 template <int D>

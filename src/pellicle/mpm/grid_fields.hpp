@@ -58,6 +58,7 @@ class GridFields {
   Grid<D> centre_of_mass_;
   std::vector<Grid<D>> body_grids_;
   std::vector<PointRange> body_points_;
+  std::vector<NodeSpan> live_sum_;  //!< the bodies' live nodes together
 };
 
 extern template class GridFields<2>;

@@ -62,29 +62,45 @@ class TransferImpl final : public Transfer<D> {
     const long n = points.size();
     anchors_.resize(n);
     anchored_points_ = n;
-#pragma omp parallel
+    const long rows = grid.row_count();
+    thread_spans_.resize(omp_get_max_threads());
+    bool inside = true;
+#pragma omp parallel reduction(&& : inside)
     {
       // With threads, each one's node range for the scatters over all points (thread_target),
       // from the same static share of the points, so the scatters need not read the anchors
       // an extra time to find it.
       const bool ranges = omp_get_num_threads() > 1;
       long lo = std::numeric_limits<long>::max(), hi = -1;
+      // The live nodes (Grid::restart_live): per row, the span the stencils reach.
+      std::vector<NodeSpan>& spans = thread_spans_[omp_get_thread_num()];
+      spans.assign(rows, NodeSpan{});
+      RowReach reach;
 #pragma omp for schedule(static) nowait
       for (long p = 0; p < n; ++p) {
         anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
         if (ranges) extend_node_range(grid, anchors_[p], lo, hi);
+        reach.add(grid, anchors_[p], spans);
       }
+      reach.flush(grid, spans);
+      inside = reach.inside;
 #pragma omp single
       anchored_ranges_.assign(omp_get_num_threads(), {0, -1});
       anchored_ranges_[omp_get_thread_num()] = {lo, hi};
     }
+    // A point outside the storage is stopped by the step's checks; until then every node is
+    // live (an empty list).
+    anchored_spans_.clear();
+    if (!inside) return;
+    anchored_spans_ = thread_spans_[0];
+    for (int t = 1; t < static_cast<int>(thread_spans_.size()); ++t)
+      for (long r = 0; r < rows; ++r)
+        anchored_spans_[r].add(thread_spans_[t][r].first, thread_spans_[t][r].last);
   }
 
   void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
                PointRange range) override {
-    zero(grid.mass);
-    zero(grid.momentum);
-    if (forces) zero(grid.force);
+    grid.restart_live(anchored_spans_);
     if (apic()) {
       if (forces)
         scatter<true, true, true>(points, gravity, grid, range);
@@ -100,7 +116,7 @@ class TransferImpl final : public Transfer<D> {
 
   void forces_to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid,
                       PointRange range) override {
-    zero(grid.force);
+    grid.zero_live(grid.force);
     scatter<false, true, false>(points, gravity, grid, range);
   }
 
@@ -147,7 +163,7 @@ class TransferImpl final : public Transfer<D> {
   }
 
   void remap(const Particles<D>& points, Grid<D>& grid, PointRange range) override {
-    zero(grid.momentum);
+    grid.zero_live(grid.momentum);
     if (apic())
       scatter<false, false, true, true>(points, Vec<D>::Zero(), grid, range);
     else
@@ -234,7 +250,7 @@ class TransferImpl final : public Transfer<D> {
     double speed_squared = 0.0;  // the largest |v|²: one square root at the end
     long first_bad = std::numeric_limits<long>::max();
     if (remap) {
-      zero(grid.momentum);
+      grid.zero_live(grid.momentum);
       buffers_.prepare(grid);
     }
 #pragma omp parallel reduction(max : speed_squared) reduction(min : first_bad)
@@ -349,18 +365,6 @@ class TransferImpl final : public Transfer<D> {
               : "non-finite position or velocity";
     }
     return std::sqrt(speed_squared);
-  }
-
-  template <class T>
-  static void zero(std::vector<T>& field) {
-    const long n = static_cast<long>(field.size());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      if constexpr (std::is_same_v<T, double>)
-        field[i] = 0.0;
-      else
-        field[i].setZero();
-    }
   }
 
   //! The one scatter loop: mass and momentum (WithMass), forces (WithForce), the APIC affine
@@ -540,6 +544,47 @@ class TransferImpl final : public Transfer<D> {
     hi = std::max(hi, last);
   }
 
+  //! The rows of the stencils of consecutive points, added to the spans of the grid's rows
+  //! (one per row of its storage). Every row of a stencil takes the same nodes along axis 0,
+  //! and consecutive points mostly share their first node on the other axes, so the span of
+  //! such a run is gathered here and added to its rows once, when the run ends.
+  struct RowReach {
+    int run[D] = {};     //!< the run's first node on axes 1..D−1 (grid indices)
+    bool open = false;   //!< a run is being gathered
+    bool inside = true;  //!< every stencil so far lies within the grid's storage
+    NodeSpan span;       //!< the run's nodes along axis 0 (grid indices)
+    void add(const Grid<D>& grid, const StencilAnchor<D>& anchor, std::vector<NodeSpan>& spans) {
+      bool same = open;
+      for (int d = 1; d < D; ++d) same = same && anchor.first[d] == run[d];
+      if (!same) {
+        flush(grid, spans);
+        for (int d = 1; d < D; ++d) run[d] = anchor.first[d];
+        open = true;
+      }
+      span.add(anchor.first[0], anchor.first[0] + Kernel::width - 1);
+    }
+    //! End the run: its rows take its span, or, when a stencil of it does not lie within the
+    //! storage, `inside` turns false.
+    void flush(const Grid<D>& grid, std::vector<NodeSpan>& spans) {
+      constexpr int W = Kernel::width;
+      if (!open) return;
+      open = false;
+      run[0] = span.first;
+      for (int d = 0; d < D; ++d) {
+        const int offset = run[d] - grid.first()[d];
+        const int last = (d == 0 ? span.last - span.first : W - 1) + offset;
+        if (offset < 0 || last >= grid.nodes()[d]) inside = false;
+      }
+      const NodeSpan stored{span.first - grid.first()[0], span.last - grid.first()[0]};
+      span = NodeSpan{};
+      if (!inside) return;
+      const long row = grid.row_of(run);
+      for (int c = 0; c < (D == 3 ? W : 1); ++c)
+        for (int b = 0; b < W; ++b)
+          spans[row + b + c * grid.nodes()[1]].add(stored.first, stored.last);
+    }
+  };
+
   //! This step's stencil of point p, rebuilt from its anchor (docs/theory/performance.md).
   Stencil<D, Kernel> stencil(const Grid<D>& grid, long p) const {
     Stencil<D, Kernel> s;
@@ -556,6 +601,9 @@ class TransferImpl final : public Transfer<D> {
   //! Per thread of compute_stencils, the nodes its static share of all points touches
   //! (only with more than one thread).
   std::vector<std::pair<long, long>> anchored_ranges_;
+  //! The rows the anchors' stencils reach (Grid::restart_live), and each thread's share.
+  std::vector<NodeSpan> anchored_spans_;
+  std::vector<std::vector<NodeSpan>> thread_spans_;
   ScatterBuffers<D> buffers_;
 };
 

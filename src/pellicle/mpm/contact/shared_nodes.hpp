@@ -110,17 +110,16 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
     return lagrangian ? Vec<D>(g.velocity[n] - g.velocity_change[n]) : g.velocity[n];
   };
   if (lagrangian) contact_force_.assign(bodies, Vec<D>::Zero());
-  const long nodes = centre_of_mass.node_count();
 #pragma omp parallel
   {
     std::vector<Vec<D>>& force = thread_force_[omp_get_thread_num()];
     std::fill(force.begin(), force.end(), Vec<D>::Zero());
     SharedNode<D>& node = nodes_[omp_get_thread_num()];
-#pragma omp for schedule(static)
-    for (long n = 0; n < nodes; ++n) {
+    // Nodes with mass are live in the centre-of-mass field (the sum of the bodies').
+    centre_of_mass.for_each_live_of_thread([&](long n) {
       int present = 0;  // most nodes hold one body or none: look before filling the node
       for (int b = 0; b < bodies && present < 2; ++b) present += grids[b]->mass[n] > 0.0;
-      if (present < 2) continue;
+      if (present < 2) return;
       node.count = 0;
       for (int b = 0; b < bodies; ++b) {
         const Grid<D>& g = *grids[b];
@@ -156,7 +155,7 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
         }
         g.velocity[n] = node.velocity[k];
       }
-    }
+    });
 #pragma omp critical
     for (int b = 0; b < bodies; ++b) contact_force_[b] += force[b];
   }

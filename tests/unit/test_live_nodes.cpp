@@ -1,0 +1,175 @@
+// Live nodes (docs/theory/performance.md, "Live nodes"): the grid passes visit per row only
+// the span of nodes a step may write. Checked here: a restart clears what the last step wrote
+// and keeps nothing else, the live set is closed under the ghost mirrors of constrained faces
+// (so folding and mirroring stay inside it), marked nodes join it, and the momentum update
+// over the live nodes gives every node of the grid what the update over all nodes gives.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "pellicle/mpm/grid.hpp"
+
+namespace pellicle {
+namespace {
+
+template <int D>
+Grid<D> walled_grid(double cell) {
+  FaceConditions<D> faces;
+  faces.fill(FaceCondition::fixed);
+  faces[1] = FaceCondition::slip;  // x-max
+  faces[2] = FaceCondition::free;  // y-min
+  return Grid<D>(Vec<D>::Zero(), Vec<D>::Ones(), cell, faces);
+}
+
+template <int D>
+bool holds(const Grid<D>& g, const std::vector<NodeSpan>& spans, long node) {
+  const NodeSpan& s = spans[node / g.nodes()[0]];
+  const int x = static_cast<int>(node % g.nodes()[0]);
+  return x >= s.first && x <= s.last;
+}
+
+template <int D>
+bool is_live(const Grid<D>& g, long node) {
+  return holds(g, g.live(), node);
+}
+
+//! Spans a few scattered 3-wide stencils reach, some of them into the ghost layers.
+template <int D>
+std::vector<NodeSpan> some_spans(const Grid<D>& g, std::mt19937& rng) {
+  std::vector<NodeSpan> spans(g.row_count());
+  std::uniform_int_distribution<int> pick(0, 1 << 20);
+  for (int k = 0; k < 6; ++k) {
+    int first[D];
+    for (int d = 0; d < D; ++d) first[d] = pick(rng) % (g.nodes()[d] - 2);
+    first[0] = k == 0 ? 0 : first[0];  // one reaches the x-min ghosts
+    const long row = g.row_of(first);
+    for (int c = 0; c < (D == 3 ? 3 : 1); ++c)
+      for (int b = 0; b < 3; ++b)
+        spans[row + b + c * (D == 3 ? g.nodes()[1] : 0)].add(first[0], first[0] + 2);
+  }
+  return spans;
+}
+
+template <int D>
+void fill_live(Grid<D>& g, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.5, 1.5);
+  for (long n = 0; n < g.node_count(); ++n) {
+    if (!is_live(g, n)) continue;
+    g.mass[n] = u(rng);
+    for (int d = 0; d < D; ++d) {
+      g.momentum[n][d] = u(rng);
+      g.force[n][d] = u(rng);
+      g.velocity[n][d] = u(rng);
+      g.velocity_change[n][d] = u(rng);
+    }
+  }
+}
+
+template <int D>
+void expect_restart_clears_the_last_step() {
+  std::mt19937 rng(7);
+  Grid<D> g = walled_grid<D>(1.0 / 32);
+  fill_live(g, rng);  // a new grid is live everywhere
+  const std::vector<Vec<D>> velocity = g.velocity;
+  const std::vector<NodeSpan> next = some_spans(g, rng);
+  g.restart_live(next);
+  long live = 0;
+  for (long n = 0; n < g.node_count(); ++n) {
+    ASSERT_EQ(g.mass[n], 0.0);
+    ASSERT_TRUE(g.momentum[n].isZero(0.0) && g.force[n].isZero(0.0));
+    live += is_live(g, n);
+    if (holds(g, next, n)) {  // kept: the update rewrites them
+      ASSERT_EQ(g.velocity[n], velocity[n]) << "node " << n;
+    } else if (!is_live(g, n)) {
+      ASSERT_TRUE(g.velocity[n].isZero(0.0) && g.velocity_change[n].isZero(0.0)) << "node " << n;
+    }
+  }
+  EXPECT_GT(live, 0);
+  EXPECT_LT(live, g.node_count() / 2);
+}
+
+TEST(LiveNodes, RestartClearsTheLastStepsNodes2D) {
+  expect_restart_clears_the_last_step<2>();
+}
+TEST(LiveNodes, RestartClearsTheLastStepsNodes3D) {
+  expect_restart_clears_the_last_step<3>();
+}
+
+//! Every live node's mirror image across a constrained face, within the ghost layers, is live.
+template <int D>
+void expect_closed_under_mirrors() {
+  std::mt19937 rng(11);
+  Grid<D> g = walled_grid<D>(0.125);
+  g.restart_live(some_spans(g, rng));
+  int pairs = 0;
+  for (long n = 0; n < g.node_count(); ++n) {
+    if (!is_live(g, n)) continue;
+    for (int d = 0; d < D; ++d)
+      for (int side = 0; side < 2; ++side) {
+        if (g.faces()[2 * d + side] == FaceCondition::free) continue;
+        const int face = side == 0 ? Grid<D>::kGhost : Grid<D>::kGhost + g.cells()[d];
+        IVec<D> index = g.unflatten(n);
+        const int k = index[d] - face;
+        if (k == 0 || std::abs(k) > Grid<D>::kGhost) continue;
+        index[d] = face - k;
+        ++pairs;
+        EXPECT_TRUE(is_live(g, g.flatten(index))) << "node " << n << " axis " << d;
+      }
+  }
+  EXPECT_GT(pairs, 0);
+}
+
+TEST(LiveNodes, ClosedUnderTheGhostMirrors2D) {
+  expect_closed_under_mirrors<2>();
+}
+TEST(LiveNodes, ClosedUnderTheGhostMirrors3D) {
+  expect_closed_under_mirrors<3>();
+}
+
+TEST(LiveNodes, MarkedAndPrescribedNodesJoin) {
+  Grid<2> g = walled_grid<2>(0.125);
+  g.restart_live(std::vector<NodeSpan>(g.row_count()));
+  for (long n = 0; n < g.node_count(); ++n) ASSERT_FALSE(is_live(g, n));
+  const long marked = g.flatten(IVec<2>(5, 6)), prescribed = g.flatten(IVec<2>(7, 3));
+  g.mark_live(&marked, &marked + 1);
+  g.prescribe({{prescribed, Vec2(1.0, 0.0)}});
+  EXPECT_TRUE(is_live(g, marked));
+  EXPECT_TRUE(is_live(g, prescribed));
+  g.integrate(0.1);
+  EXPECT_EQ(g.velocity[prescribed], Vec2(1.0, 0.0));
+}
+
+//! The update over the live nodes equals the update over every node, node by node.
+template <int D>
+void expect_update_as_over_every_node(int threads) {
+  std::mt19937 rng(3);
+  Grid<D> live = walled_grid<D>(0.1);
+  live.restart_live(some_spans(live, rng));
+  fill_live(live, rng);
+  Grid<D> whole = walled_grid<D>(0.1);  // live everywhere
+  whole.mass = live.mass, whole.momentum = live.momentum, whole.force = live.force;
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  live.fold(live.mass), live.fold(live.momentum), live.fold(live.force);
+  whole.fold(whole.mass), whole.fold(whole.momentum), whole.fold(whole.force);
+  live.integrate(0.01);
+  whole.integrate(0.01);
+  omp_set_num_threads(before);
+  for (long n = 0; n < live.node_count(); ++n) {
+    ASSERT_EQ(live.velocity[n], whole.velocity[n]) << "node " << n;
+    ASSERT_EQ(live.velocity_change[n], whole.velocity_change[n]) << "node " << n;
+  }
+}
+
+TEST(LiveNodes, UpdateAsOverEveryNode) {
+  for (int threads : {1, 2, 3}) {
+    expect_update_as_over_every_node<2>(threads);
+    expect_update_as_over_every_node<3>(threads);
+  }
+}
+
+}  // namespace
+}  // namespace pellicle
