@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "pellicle/mpm/grid.hpp"
+#include "pellicle/mpm/particles.hpp"
+#include "pellicle/mpm/transfer.hpp"
 
 namespace pellicle {
 namespace {
@@ -168,6 +170,50 @@ TEST(LiveNodes, UpdateAsOverEveryNode) {
   for (int threads : {1, 2, 3}) {
     expect_update_as_over_every_node<2>(threads);
     expect_update_as_over_every_node<3>(threads);
+  }
+}
+
+//! After compute_stencils and to_grid every node a point's stencil weighs is live, and every
+//! node with mass is one of them: points in runs along rows (as a fill places them), in
+//! random order, and a few in the ghost-adjacent cells of walled faces.
+template <int D>
+void expect_stencils_live(int threads) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  for (const auto& kernel : kernel_choices<D>()) {
+    Grid<D> grid = walled_grid<D>(1.0 / 16);
+    Particles<D> points;
+    TransferOptions options;
+    options.kinematics = D == 2 ? Kinematics::plane_strain : Kinematics::solid;
+    auto transfer = kernel.make(options, 2.0);
+    transfer->declare_columns(points);
+    points.bodies.push_back({"cloud", 0, Vec<D>::Zero(), 0, 0, nullptr});
+    for (int k = 0; k < 200; ++k) {  // a run along axis 0, then scattered points
+      Vec<D> x;
+      for (int d = 0; d < D; ++d) x[d] = k < 40 ? (d == 0 ? 0.3 + 0.01 * k : 0.4) : u(rng);
+      points.add(x, Vec<D>::Zero(), 1.0, 1.0);
+    }
+    transfer->compute_stencils(points, grid);
+    transfer->to_grid(points, Vec<D>::Zero(), grid, false);
+    std::vector<long> reached;
+    transfer->touched_nodes(grid, 0, points.size(), reached);
+    for (long n : reached) ASSERT_TRUE(is_live(grid, n)) << kernel.name << " node " << n;
+    long live = 0;
+    for (long n = 0; n < grid.node_count(); ++n) {
+      live += is_live(grid, n);
+      ASSERT_TRUE(grid.mass[n] == 0.0 || is_live(grid, n)) << kernel.name << " node " << n;
+    }
+    EXPECT_LT(live, grid.node_count()) << kernel.name;
+  }
+  omp_set_num_threads(before);
+}
+
+TEST(LiveNodes, StencilsOfEveryKernelAreLive) {
+  for (int threads : {1, 2}) {
+    expect_stencils_live<2>(threads);
+    expect_stencils_live<3>(threads);
   }
 }
 

@@ -72,7 +72,8 @@ class TransferImpl final : public Transfer<D> {
       // an extra time to find it.
       const bool ranges = omp_get_num_threads() > 1;
       long lo = std::numeric_limits<long>::max(), hi = -1;
-      // The live nodes (Grid::restart_live): per row, the span the stencils reach.
+      // The live nodes (Grid::restart_live): per first row of the stencils, the span they
+      // reach.
       std::vector<NodeSpan>& spans = thread_spans_[omp_get_thread_num()];
       spans.assign(rows, NodeSpan{});
       RowReach reach;
@@ -96,6 +97,7 @@ class TransferImpl final : public Transfer<D> {
     for (int t = 1; t < static_cast<int>(thread_spans_.size()); ++t)
       for (long r = 0; r < rows; ++r)
         anchored_spans_[r].add(thread_spans_[t][r].first, thread_spans_[t][r].last);
+    stencil_spans(grid, anchored_spans_);
   }
 
   void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
@@ -544,46 +546,56 @@ class TransferImpl final : public Transfer<D> {
     hi = std::max(hi, last);
   }
 
-  //! The rows of the stencils of consecutive points, added to the spans of the grid's rows
-  //! (one per row of its storage). Every row of a stencil takes the same nodes along axis 0,
-  //! and consecutive points mostly share their first node on the other axes, so the span of
-  //! such a run is gathered here and added to its rows once, when the run ends.
+  //! The nodes along axis 0 that the stencils of consecutive points reach, kept per stencil
+  //! first row: `first_rows[r]` spans what the stencils whose first row is r reach in each of
+  //! their rows (stencil_spans() spreads them over all rows). Consecutive points mostly share
+  //! their first row, so a run of them is gathered here and written once, when it ends.
   struct RowReach {
-    int run[D] = {};     //!< the run's first node on axes 1..D−1 (grid indices)
+    int run[D] = {};     //!< the run's first node on each axis (axis 0: its smallest)
     bool open = false;   //!< a run is being gathered
     bool inside = true;  //!< every stencil so far lies within the grid's storage
     NodeSpan span;       //!< the run's nodes along axis 0 (grid indices)
-    void add(const Grid<D>& grid, const StencilAnchor<D>& anchor, std::vector<NodeSpan>& spans) {
+    void add(const Grid<D>& grid, const StencilAnchor<D>& anchor,
+             std::vector<NodeSpan>& first_rows) {
       bool same = open;
       for (int d = 1; d < D; ++d) same = same && anchor.first[d] == run[d];
       if (!same) {
-        flush(grid, spans);
+        flush(grid, first_rows);
         for (int d = 1; d < D; ++d) run[d] = anchor.first[d];
         open = true;
       }
       span.add(anchor.first[0], anchor.first[0] + Kernel::width - 1);
     }
-    //! End the run: its rows take its span, or, when a stencil of it does not lie within the
-    //! storage, `inside` turns false.
-    void flush(const Grid<D>& grid, std::vector<NodeSpan>& spans) {
-      constexpr int W = Kernel::width;
+    //! End the run: its first row takes its span, or, when a stencil of it does not lie
+    //! within the storage, `inside` turns false.
+    void flush(const Grid<D>& grid, std::vector<NodeSpan>& first_rows) {
       if (!open) return;
       open = false;
       run[0] = span.first;
       for (int d = 0; d < D; ++d) {
-        const int offset = run[d] - grid.first()[d];
-        const int last = (d == 0 ? span.last - span.first : W - 1) + offset;
-        if (offset < 0 || last >= grid.nodes()[d]) inside = false;
+        const int end = (d == 0 ? span.last : run[d] + Kernel::width - 1) - grid.first()[d];
+        if (run[d] < grid.first()[d] || end >= grid.nodes()[d]) inside = false;
       }
-      const NodeSpan stored{span.first - grid.first()[0], span.last - grid.first()[0]};
+      if (inside)
+        first_rows[grid.row_of(run)].add(span.first - grid.first()[0], span.last - grid.first()[0]);
       span = NodeSpan{};
-      if (!inside) return;
-      const long row = grid.row_of(run);
-      for (int c = 0; c < (D == 3 ? W : 1); ++c)
-        for (int b = 0; b < W; ++b)
-          spans[row + b + c * grid.nodes()[1]].add(stored.first, stored.last);
     }
   };
+
+  //! The spans of every row from those of the stencils' first rows: row (j[, k]) holds the
+  //! stencils whose first row is (j − b[, k − c]) for b[, c] = 0..W−1, one axis at a time.
+  static void stencil_spans(const Grid<D>& grid, std::vector<NodeSpan>& spans) {
+    constexpr int W = Kernel::width;
+    const long rows = grid.row_count();
+    for (int d = 1; d < D; ++d) {
+      const long step = d == 1 ? 1 : grid.nodes()[1], n = grid.nodes()[d];
+      for (long r = rows - 1; r >= 0; --r) {  // downwards, so each row reads first rows only
+        const long j = (r / step) % n;
+        for (int b = 1; b < W && b <= j; ++b)
+          spans[r].add(spans[r - b * step].first, spans[r - b * step].last);
+      }
+    }
+  }
 
   //! This step's stencil of point p, rebuilt from its anchor (docs/theory/performance.md).
   Stencil<D, Kernel> stencil(const Grid<D>& grid, long p) const {
