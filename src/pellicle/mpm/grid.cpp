@@ -104,15 +104,35 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
       group_ends_.push_back(static_cast<long>(mirrors_.size()));
     }
   }
+  select_live_mirrors();
 }
 
 template <int D>
 template <bool Backwards, class F>
 void Grid<D>::for_each_mirror_group(F&& f) const {
-  const int groups = static_cast<int>(group_ends_.size());
+  const int groups = static_cast<int>(live_group_ends_.size());
   for (int i = 0; i < groups; ++i) {
     const int g = Backwards ? groups - 1 - i : i;
-    f(g == 0 ? 0L : group_ends_[g - 1], group_ends_[g]);
+    f(g == 0 ? 0L : live_group_ends_[g - 1], live_group_ends_[g]);
+  }
+}
+
+template <int D>
+void Grid<D>::select_live_mirrors() {
+  // A pair whose ghost is not live has its image not live either (close_live): both hold
+  // zero, and folding or mirroring them changes nothing.
+  live_mirrors_.clear();
+  live_group_ends_.clear();
+  long begin = 0;
+  for (const long end : group_ends_) {
+    for (long i = begin; i < end; ++i) {
+      const long ghost = mirrors_[i].ghost;
+      const NodeSpan& span = live_[ghost / nodes_[0]];
+      const long x = ghost % nodes_[0];
+      if (x >= span.first && x <= span.last) live_mirrors_.push_back(mirrors_[i]);
+    }
+    live_group_ends_.push_back(static_cast<long>(live_mirrors_.size()));
+    begin = end;
   }
 }
 
@@ -127,7 +147,7 @@ void Grid<D>::fold(std::vector<double>& field) const {
   for_each_mirror_group([&](long begin, long end) {
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
     for (long i = begin; i < end; ++i) {
-      const Mirror& m = mirrors_[i];
+      const Mirror& m = live_mirrors_[i];
       field[m.image] += field[m.ghost];
       field[m.ghost] = 0.0;
     }
@@ -139,7 +159,7 @@ void Grid<D>::fold(std::vector<Vec<D>>& field) const {
   for_each_mirror_group([&](long begin, long end) {
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
     for (long i = begin; i < end; ++i) {
-      const Mirror& m = mirrors_[i];
+      const Mirror& m = live_mirrors_[i];
       field[m.image] += reflect(field[m.ghost], m.flips);
       field[m.ghost].setZero();
     }
@@ -151,7 +171,7 @@ void Grid<D>::mirror(std::vector<Vec<D>>& field) const {
   for_each_mirror_group<true>([&](long begin, long end) {
 #pragma omp parallel for schedule(static) if (end - begin > kParallelMirrors)
     for (long i = begin; i < end; ++i) {
-      const Mirror& m = mirrors_[i];
+      const Mirror& m = live_mirrors_[i];
       field[m.ghost] = reflect(field[m.image], m.flips);
     }
   });
@@ -251,6 +271,7 @@ void Grid<D>::close_live() {
       }
     }
   }
+  select_live_mirrors();
   // Rows shared among the threads by live node counts, for for_each_live().
   const int threads = omp_get_max_threads();
   long total = 0;

@@ -230,7 +230,12 @@ class Grid {
   //! pairs may be folded or mirrored in any order; the groups keep theirs (corner ghosts
   //! reach the interior through the faces of two axes).
   std::vector<long> group_ends_;
-  //! f(begin, end) for each group of mirrors_, in order or (Backwards) in reverse order.
+  //! The pairs of mirrors_ whose nodes are live, in the same groups; fold() and mirror()
+  //! visit these.
+  std::vector<Mirror> live_mirrors_;
+  std::vector<long> live_group_ends_;
+  void select_live_mirrors();
+  //! f(begin, end) for each group of live_mirrors_, in order or (Backwards) in reverse order.
   template <bool Backwards = false, class F>
   void for_each_mirror_group(F&& f) const;
   std::vector<std::pair<long, Vec<D>>> prescribed_;
