@@ -13,10 +13,15 @@ void SharedNodes<D>::colour_functions(Simulation<D>& simulation) {
   colour_.resize(fields.count());
   for (int b = 0; b < fields.count(); ++b) {
     const auto& body = points.bodies[b];
-    colour_[b].assign(cell_count(fields.field(b)), 0.0);
-    spread_to_cells(fields.field(b), points.position, points.volume, body.begin, body.end,
-                    colour_[b], spread_copies_);
-    simulation.complete_cell_sums(colour_[b]);
+    std::vector<double>& colour = colour_[b];
+    const long cells = cell_count(fields.field(b));
+    colour.resize(cells);
+    // Cleared by all threads: a whole-field clear on one thread holds the others up.
+#pragma omp parallel for schedule(static)
+    for (long c = 0; c < cells; ++c) colour[c] = 0.0;
+    spread_to_cells(fields.field(b), points.position, points.volume, body.begin, body.end, colour,
+                    spread_copies_);
+    simulation.complete_cell_sums(colour);
   }
 }
 
