@@ -26,16 +26,12 @@ Grid<D> walled_grid(double cell) {
   return Grid<D>(Vec<D>::Zero(), Vec<D>::Ones(), cell, faces);
 }
 
+//! True when `spans` (one per row of g's storage) hold `node`.
 template <int D>
 bool holds(const Grid<D>& g, const std::vector<NodeSpan>& spans, long node) {
   const NodeSpan& s = spans[node / g.nodes()[0]];
   const int x = static_cast<int>(node % g.nodes()[0]);
   return x >= s.first && x <= s.last;
-}
-
-template <int D>
-bool is_live(const Grid<D>& g, long node) {
-  return holds(g, g.live(), node);
 }
 
 //! Spans a few scattered 3-wide stencils reach, some of them into the ghost layers.
@@ -59,7 +55,7 @@ template <int D>
 void fill_live(Grid<D>& g, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.5, 1.5);
   for (long n = 0; n < g.node_count(); ++n) {
-    if (!is_live(g, n)) continue;
+    if (!g.is_live(n)) continue;
     g.mass[n] = u(rng);
     for (int d = 0; d < D; ++d) {
       g.momentum[n][d] = u(rng);
@@ -82,10 +78,10 @@ void expect_restart_clears_the_last_step() {
   for (long n = 0; n < g.node_count(); ++n) {
     ASSERT_EQ(g.mass[n], 0.0);
     ASSERT_TRUE(g.momentum[n].isZero(0.0) && g.force[n].isZero(0.0));
-    live += is_live(g, n);
+    live += g.is_live(n);
     if (holds(g, next, n)) {  // kept: the update rewrites them
       ASSERT_EQ(g.velocity[n], velocity[n]) << "node " << n;
-    } else if (!is_live(g, n)) {
+    } else if (!g.is_live(n)) {
       ASSERT_TRUE(g.velocity[n].isZero(0.0) && g.velocity_change[n].isZero(0.0)) << "node " << n;
     }
   }
@@ -108,7 +104,7 @@ void expect_closed_under_mirrors() {
   g.restart_live(some_spans(g, rng));
   int pairs = 0;
   for (long n = 0; n < g.node_count(); ++n) {
-    if (!is_live(g, n)) continue;
+    if (!g.is_live(n)) continue;
     for (int d = 0; d < D; ++d)
       for (int side = 0; side < 2; ++side) {
         if (g.faces()[2 * d + side] == FaceCondition::free) continue;
@@ -118,7 +114,7 @@ void expect_closed_under_mirrors() {
         if (k == 0 || std::abs(k) > Grid<D>::kGhost) continue;
         index[d] = face - k;
         ++pairs;
-        EXPECT_TRUE(is_live(g, g.flatten(index))) << "node " << n << " axis " << d;
+        EXPECT_TRUE(g.is_live(g.flatten(index))) << "node " << n << " axis " << d;
       }
   }
   EXPECT_GT(pairs, 0);
@@ -134,12 +130,12 @@ TEST(LiveNodes, ClosedUnderTheGhostMirrors3D) {
 TEST(LiveNodes, MarkedAndPrescribedNodesJoin) {
   Grid<2> g = walled_grid<2>(0.125);
   g.restart_live(std::vector<NodeSpan>(g.row_count()));
-  for (long n = 0; n < g.node_count(); ++n) ASSERT_FALSE(is_live(g, n));
+  for (long n = 0; n < g.node_count(); ++n) ASSERT_FALSE(g.is_live(n));
   const long marked = g.flatten(IVec<2>(5, 6)), prescribed = g.flatten(IVec<2>(7, 3));
   g.mark_live(&marked, &marked + 1);
   g.prescribe({{prescribed, Vec2(1.0, 0.0)}});
-  EXPECT_TRUE(is_live(g, marked));
-  EXPECT_TRUE(is_live(g, prescribed));
+  EXPECT_TRUE(g.is_live(marked));
+  EXPECT_TRUE(g.is_live(prescribed));
   g.integrate(0.1);
   EXPECT_EQ(g.velocity[prescribed], Vec2(1.0, 0.0));
 }
@@ -199,11 +195,11 @@ void expect_stencils_live(int threads) {
     transfer->to_grid(points, Vec<D>::Zero(), grid, false);
     std::vector<long> reached;
     transfer->touched_nodes(grid, 0, points.size(), reached);
-    for (long n : reached) ASSERT_TRUE(is_live(grid, n)) << kernel.name << " node " << n;
+    for (long n : reached) ASSERT_TRUE(grid.is_live(n)) << kernel.name << " node " << n;
     long live = 0;
     for (long n = 0; n < grid.node_count(); ++n) {
-      live += is_live(grid, n);
-      ASSERT_TRUE(grid.mass[n] == 0.0 || is_live(grid, n)) << kernel.name << " node " << n;
+      live += grid.is_live(n);
+      ASSERT_TRUE(grid.mass[n] == 0.0 || grid.is_live(n)) << kernel.name << " node " << n;
     }
     EXPECT_LT(live, grid.node_count()) << kernel.name;
   }

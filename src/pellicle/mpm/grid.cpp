@@ -125,12 +125,8 @@ void Grid<D>::select_live_mirrors() {
   live_group_ends_.clear();
   long begin = 0;
   for (const long end : group_ends_) {
-    for (long i = begin; i < end; ++i) {
-      const long ghost = mirrors_[i].ghost;
-      const NodeSpan& span = live_[ghost / nodes_[0]];
-      const long x = ghost % nodes_[0];
-      if (x >= span.first && x <= span.last) live_mirrors_.push_back(mirrors_[i]);
-    }
+    for (long i = begin; i < end; ++i)
+      if (is_live(mirrors_[i].ghost)) live_mirrors_.push_back(mirrors_[i]);
     live_group_ends_.push_back(static_cast<long>(live_mirrors_.size()));
     begin = end;
   }

@@ -146,6 +146,11 @@ class Grid {
   //! Add nodes to the live set (their fields are zero until written).
   void mark_live(const long* first, const long* last);
   const std::vector<NodeSpan>& live() const { return live_; }
+  bool is_live(long node) const {
+    const NodeSpan& span = live_[node / nodes_[0]];
+    const long x = node % nodes_[0];
+    return x >= span.first && x <= span.last;
+  }
   long row_count() const { return node_count_ / nodes_[0]; }
   //! Stored row holding the nodes (·, j[, k]) given as grid indices of the higher axes.
   long row_of(const int* index) const {
