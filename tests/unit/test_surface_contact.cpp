@@ -272,9 +272,11 @@ TEST(ContactResponses, NoneOnlyRecordsTheSide) {
   EXPECT_GT(r.penetrated, 0);
   EXPECT_EQ(r.projected + r.removed, 0);
   EXPECT_EQ(s.cloud.position, x);
-  for (std::size_t i = 0; i < s.cloud.size(); ++i)
-    if (s.cloud.position[i].head<2>().lpNorm<Eigen::Infinity>() < 0.7)
+  for (std::size_t i = 0; i < s.cloud.size(); ++i) {
+    if (s.cloud.position[i].head<2>().lpNorm<Eigen::Infinity>() < 0.7) {
       EXPECT_EQ(s.cloud.contact_side[i], s.cloud.chamber[i] == 0 ? 1 : -1);
+    }
+  }
 }
 
 }  // namespace
