@@ -104,7 +104,7 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
       group_ends_.push_back(static_cast<long>(mirrors_.size()));
     }
   }
-  select_live_mirrors();
+  select_live_boundary();
 }
 
 template <int D>
@@ -118,9 +118,12 @@ void Grid<D>::for_each_mirror_group(F&& f) const {
 }
 
 template <int D>
-void Grid<D>::select_live_mirrors() {
-  // A pair whose ghost is not live has its image not live either (close_live): both hold
-  // zero, and folding or mirroring them changes nothing.
+void Grid<D>::select_live_boundary() {
+  // Constraining a node that is not live, or folding or mirroring a pair whose ghost is not
+  // live (its image is not either: close_live), changes nothing: they hold zero.
+  live_constraints_.clear();
+  for (const Constraint& c : constraints_)
+    if (is_live(c.node)) live_constraints_.push_back(c);
   live_mirrors_.clear();
   live_group_ends_.clear();
   long begin = 0;
@@ -267,7 +270,7 @@ void Grid<D>::close_live() {
       }
     }
   }
-  select_live_mirrors();
+  select_live_boundary();
   // Rows shared among the threads by live node counts, for for_each_live().
   const int threads = omp_get_max_threads();
   long total = 0;

@@ -191,8 +191,9 @@ class Grid {
   }
 
   //! Zero the constrained components of a nodal vector field (velocity, momentum, force).
+  //! Outside the live nodes they are zero already.
   void constrain(std::vector<Vec<D>>& field) const {
-    for (const auto& c : constraints_)
+    for (const auto& c : live_constraints_)
       for (int d = 0; d < D; ++d)
         if (c.mask & (1u << d)) field[c.node][d] = 0.0;
   }
@@ -235,11 +236,12 @@ class Grid {
   //! pairs may be folded or mirrored in any order; the groups keep theirs (corner ghosts
   //! reach the interior through the faces of two axes).
   std::vector<long> group_ends_;
-  //! The pairs of mirrors_ whose nodes are live, in the same groups; fold() and mirror()
-  //! visit these.
+  //! The constraints on live nodes, which constrain() visits, and the pairs of mirrors_ whose
+  //! nodes are live, in the same groups, which fold() and mirror() visit.
+  std::vector<Constraint> live_constraints_;
   std::vector<Mirror> live_mirrors_;
   std::vector<long> live_group_ends_;
-  void select_live_mirrors();
+  void select_live_boundary();
   //! f(begin, end) for each group of live_mirrors_, in order or (Backwards) in reverse order.
   template <bool Backwards = false, class F>
   void for_each_mirror_group(F&& f) const;
