@@ -10,6 +10,7 @@
 
 #include "pellicle/core/error.hpp"
 #include "pellicle/core/log.hpp"
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/boundary/rigid_bodies.hpp"
 #include "pellicle/mpm/cell_density.hpp"
 
@@ -469,18 +470,16 @@ template <int D>
 SystemState<D> Simulation<D>::state() const {
   SystemState<D> s;
   const long n = points_.size();
-  double kinetic = 0.0, gravitational = 0.0;
-  double momentum[3] = {0.0, 0.0, 0.0};
-#pragma omp parallel for schedule(static) reduction(+ : kinetic, gravitational, momentum[:3])
-  for (long p = 0; p < n; ++p) {
+  // Kinetic and gravitational energy, momentum.
+  const auto sums = ordered_sums<2 + D>(0, n, [&](long p, std::array<double, 2 + D>& sum) {
     const double m = points_.mass[p];
-    kinetic += 0.5 * m * points_.velocity[p].squaredNorm();
-    gravitational -= m * gravity_.dot(points_.position[p]);
-    for (int d = 0; d < D; ++d) momentum[d] += m * points_.velocity[p][d];
-  }
-  s.kinetic = kinetic + transfer_->affine_kinetic_energy(points_, grid());
-  s.gravitational = gravitational;
-  for (int d = 0; d < D; ++d) s.momentum[d] = momentum[d];
+    sum[0] += 0.5 * m * points_.velocity[p].squaredNorm();
+    sum[1] -= m * gravity_.dot(points_.position[p]);
+    for (int d = 0; d < D; ++d) sum[2 + d] += m * points_.velocity[p][d];
+  });
+  s.kinetic = sums[0] + transfer_->affine_kinetic_energy(points_, grid());
+  s.gravitational = sums[1];
+  for (int d = 0; d < D; ++d) s.momentum[d] = sums[2 + d];
   for (const auto& body : points_.bodies) {
     s.strain += materials_[body.material]->strain_energy(points_, body.begin, body.end);
     s.internal += materials_[body.material]->internal_energy(points_, body.begin, body.end);

@@ -10,6 +10,7 @@
 #include <tuple>
 #include <utility>
 
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/scatter_buffers.hpp"
 #include "pellicle/mpm/shape/kernels.hpp"
 #include "pellicle/mpm/shape/stencil.hpp"
@@ -36,9 +37,7 @@ class TransferImpl final : public Transfer<D> {
     const long n = points.size();
     const auto& affine = points[affine_];
     const double h = grid.cell();
-    double energy = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : energy)
-    for (long p = 0; p < n; ++p) {
+    return ordered_sum(0, n, [&](long p) {
       const Vec<D> xi = grid.to_cell_units(points.position[p]);
       double e = 0.0;
       for (int d = 0; d < D; ++d) {
@@ -49,14 +48,11 @@ class TransferImpl final : public Transfer<D> {
           inertia += w[a] * (first + a - xi[d]) * (first + a - xi[d]);
         e += inertia * affine[p].col(d).squaredNorm();
       }
-      energy += 0.5 * points.mass[p] * h * h * e;
-    }
-    return energy;
+      return 0.5 * points.mass[p] * h * h * e;
+    });
   }
 
-  std::size_t stencil_bytes() const override {
-    return sizeof(StencilAnchor<D>);
-  }
+  std::size_t stencil_bytes() const override { return sizeof(StencilAnchor<D>); }
 
   void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
     const long n = points.size();

@@ -110,10 +110,10 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
     return lagrangian ? Vec<D>(g.velocity[n] - g.velocity_change[n]) : g.velocity[n];
   };
   if (lagrangian) contact_force_.assign(bodies, Vec<D>::Zero());
+  for (auto& force : thread_force_) std::fill(force.begin(), force.end(), Vec<D>::Zero());
 #pragma omp parallel
   {
     std::vector<Vec<D>>& force = thread_force_[omp_get_thread_num()];
-    std::fill(force.begin(), force.end(), Vec<D>::Zero());
     SharedNode<D>& node = nodes_[omp_get_thread_num()];
     // Nodes with mass are live in the centre-of-mass field (the sum of the bodies').
     centre_of_mass.for_each_live_of_thread([&](long n) {
@@ -156,9 +156,10 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
         g.velocity[n] = node.velocity[k];
       }
     });
-#pragma omp critical
-    for (int b = 0; b < bodies; ++b) contact_force_[b] += force[b];
   }
+  // In thread order, so that the diagnostic's last bits do not change from run to run.
+  for (const auto& force : thread_force_)
+    for (int b = 0; b < bodies; ++b) contact_force_[b] += force[b];
   for (Grid<D>* grid : grids) {
     Grid<D>& g = *grid;
     g.constrain(g.velocity);

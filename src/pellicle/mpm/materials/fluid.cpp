@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/materials/kinematics.hpp"
 
 namespace pellicle {
@@ -173,21 +174,16 @@ typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>&
 template <int D, class Eos>
 double Fluid<D, Eos>::internal_energy(const Particles<D>& points, long begin, long end) const {
   const auto& e = points[energy_];
-  double energy = 0.0;
-#pragma omp parallel for reduction(+ : energy) schedule(static)
-  for (long p = begin; p < end; ++p) energy += points.mass[p] * e[p];
-  return energy;
+  return ordered_sum(begin, end, [&](long p) { return points.mass[p] * e[p]; });
 }
 
 template <int D, class Eos>
 void Fluid<D, Eos>::history_sums(const Particles<D>& points, long begin, long end,
                                  std::vector<double>& sums) const {
-  double pv = 0.0, v = 0.0;
-#pragma omp parallel for reduction(+ : pv, v) schedule(static)
-  for (long p = begin; p < end; ++p) {
-    pv += points.volume[p] * pressure(points, p);
-    v += points.volume[p];
-  }
+  const auto [pv, v] = ordered_sums<2>(begin, end, [&](long p, std::array<double, 2>& s) {
+    s[0] += points.volume[p] * pressure(points, p);
+    s[1] += points.volume[p];
+  });
   sums.push_back(pv);
   sums.push_back(v);
 }

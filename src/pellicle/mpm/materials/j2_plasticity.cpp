@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/materials/kinematics.hpp"
 
 namespace pellicle {
@@ -50,11 +51,9 @@ template <int D>
 double J2Plasticity<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
   // (P16): from the stress alone, σ_zz included, so valid for every kinematics and after
   // yield (the elastic strain is not the total strain then).
-  double energy = 0.0;
-#pragma omp parallel for reduction(+ : energy) schedule(static)
-  for (long p = begin; p < end; ++p)
-    energy += points.volume[p] * j2_elastic_energy_density<D>(points.stress[p], constants_);
-  return energy;
+  return ordered_sum(begin, end, [&](long p) {
+    return points.volume[p] * j2_elastic_energy_density<D>(points.stress[p], constants_);
+  });
 }
 
 template <int D>

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/materials/kinematics.hpp"
 
 namespace pellicle {
@@ -68,15 +69,12 @@ template <int D>
 double LinearElastic<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
   // W = ½ σ : C⁻¹ : σ = [(1+ν) σ:σ − ν (tr σ)²] / (2E), valid for every kinematics since the
   // stored stress includes σ_zz (zero in plane stress).
-  double energy = 0.0;
-#pragma omp parallel for reduction(+ : energy) schedule(static)
-  for (long p = begin; p < end; ++p) {
+  return ordered_sum(begin, end, [&](long p) {
     const Sym<D>& s = points.stress[p];
     const double tr = trace<D>(s);
-    energy += points.volume[p] * ((1.0 + poisson_) * contract<D>(s, s) - poisson_ * tr * tr) /
-              (2.0 * young_);
-  }
-  return energy;
+    return points.volume[p] * ((1.0 + poisson_) * contract<D>(s, s) - poisson_ * tr * tr) /
+           (2.0 * young_);
+  });
 }
 
 template <int D>

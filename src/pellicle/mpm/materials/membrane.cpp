@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pellicle/core/ordered_sum.hpp"
 #include "pellicle/mpm/materials/kinematics.hpp"
 
 namespace pellicle {
@@ -176,11 +177,9 @@ template <int D>
 double Membrane<D>::strain_energy(const Particles<D>& points, long begin, long end) const {
   // ½ σ : ε V with the adjusted strain: the local law's energy (zero when slack).
   const auto& strain = points[this->strain_];
-  double energy = 0.0;
-#pragma omp parallel for reduction(+ : energy) schedule(static)
-  for (long p = begin; p < end; ++p)
-    energy += 0.5 * points.volume[p] * contract<D>(points.stress[p], strain[p]);
-  return energy;
+  return ordered_sum(begin, end, [&](long p) {
+    return 0.5 * points.volume[p] * contract<D>(points.stress[p], strain[p]);
+  });
 }
 
 template <int D>
