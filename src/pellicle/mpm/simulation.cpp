@@ -78,6 +78,7 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
 
 template <int D>
 void Simulation<D>::points_changed() {
+  settled_wave_speed_.reset();
   blocks_.clear();
   cell_density_ranges_.clear();
   std::vector<PointRange> ranges;
@@ -143,7 +144,9 @@ void Simulation<D>::step() {
 
 template <int D>
 double Simulation<D>::time_step() {
-  double wave = local_max_wave_speed();
+  // The materials stage of the last step measured it while updating the points.
+  double wave = settled_wave_speed_ ? *settled_wave_speed_ : local_max_wave_speed();
+  settled_wave_speed_.reset();
   if (collective_) {  // one reduction for both speeds
     std::vector<double> speeds{wave, max_speed_};
     collective_->max(speeds);
@@ -270,10 +273,13 @@ void Simulation<D>::materials(double dt) {
       if (axisymmetric) scratch.hoop_rate.resize(kBlockPoints);
     }
   }
-  // Per block of points, the kinematics and the material update, so the velocity gradient is
-  // used while it is in the cache and never stored for every point.
+  // Per block of points, the kinematics, the material update and the block's largest signal
+  // speed (the next step's CFL speed), so the velocity gradient is used while it is in the
+  // cache and never stored for every point, and no pass over the points of its own finds the
+  // signal speed.
   long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel reduction(min : first_bad)
+  double wave = 0.0;
+#pragma omp parallel reduction(min : first_bad) reduction(max : wave)
   {
     BlockScratch& scratch = block_scratch_[omp_get_thread_num()];
 #pragma omp for schedule(static)
@@ -299,17 +305,19 @@ void Simulation<D>::materials(double dt) {
           hoop_rate = {scratch.hoop_rate.data(), block.begin};
         }
       }
-      if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
+      if (time_ >= body.cut_at)  // a cut tether: its points carry mass but no stress
         std::fill(points_.stress.begin() + block.begin, points_.stress.begin() + block.end,
                   Sym<D>::Zero());
-        continue;
-      }
-      material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
+      else
+        material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
+      wave =
+          std::max(wave, material.max_signal_speed(points_, block.begin, block.end, grid().cell()));
     }
   }
   gradients_settled_ = false;
   if (first_bad != std::numeric_limits<long>::max())
     fail(first_bad, "non-positive or non-finite density");
+  settled_wave_speed_ = wave;
   check_materials();
 }
 
@@ -381,6 +389,7 @@ void Simulation<D>::restore_clock(double time, long step, double last_dt, double
   step_ = step;
   last_dt_ = last_dt;
   max_speed_ = max_speed;
+  settled_wave_speed_.reset();  // the points' state was just read in
 }
 
 template <int D>
@@ -431,9 +440,13 @@ double Simulation<D>::time_step(double signal_speed) const {
 template <int D>
 double Simulation<D>::local_max_wave_speed() const {
   double wave = 0.0;
-  for (const auto& body : points_.bodies)
-    wave = std::max(wave, materials_[body.material]->max_signal_speed(points_, body.begin, body.end,
-                                                                      grid().cell()));
+#pragma omp parallel for schedule(static) reduction(max : wave)
+  for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
+    const PointBlock& block = blocks_[i];
+    const Material<D>& material = *materials_[points_.bodies[block.body].material];
+    wave =
+        std::max(wave, material.max_signal_speed(points_, block.begin, block.end, grid().cell()));
+  }
   return wave;
 }
 

@@ -4,6 +4,7 @@
 //! §2.2). The step is the named stages of DESIGN.md; the update scheme orders stages 3–7.
 
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -219,6 +220,9 @@ class Simulation final : private Stages {
   std::vector<Mat<D>> settled_gradient_;
   std::vector<double> settled_hoop_rate_;
   bool gradients_settled_ = false;
+  //! This rank's largest material wave speed, measured by the materials stage for the next
+  //! time step; empty when the points changed since (set-up, restore, migration).
+  std::optional<double> settled_wave_speed_;
   double time_ = 0.0, last_dt_ = 0.0, cfl_number_ = 0.0, max_speed_ = 0.0;
   long step_ = 0;
   std::set<std::string>

@@ -80,7 +80,6 @@ double Fluid<D, Eos>::max_signal_speed(const Particles<D>& points, long begin, l
   // Stable step of a viscous element: Δt ≤ h / (Q + sqrt(Q² + c²)), Q the viscous speed
   // (docs/theory/gas.md). q is recovered from the stored stress, q = −tr σ/3 − p.
   double fastest = 0.0;
-#pragma omp parallel for reduction(max : fastest) schedule(static)
   for (long p = begin; p < end; ++p) {
     const double rho = points.density[p];
     const double pressure_p = pressure(points, p);

@@ -62,11 +62,11 @@ inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
 }
 
 //! Smallest current density of points [begin, end), and at most `reference`: the fastest
-//! elastic wave, sqrt(M/ρ), is where the material is least dense.
+//! elastic wave, sqrt(M/ρ), is where the material is least dense. Serial, like the update it
+//! follows (Material::max_signal_speed).
 template <int D>
 inline double smallest_density(const Particles<D>& points, long begin, long end, double reference) {
   double smallest = reference;
-#pragma omp parallel for reduction(min : smallest) schedule(static)
   for (long p = begin; p < end; ++p) smallest = std::min(smallest, points.density[p]);
   return smallest;
 }

@@ -76,7 +76,8 @@ class Material {
   virtual void update(const MaterialStep<D>& step) const = 0;
   //! Largest signal speed over the points on cells of size `cell`, for the CFL time step
   //! (IJNME eq 19): the elastic wave speed for solids; for fluids the sound speed raised by
-  //! the viscous terms (docs/theory/gas.md).
+  //! the viscous terms (docs/theory/gas.md). Serial, like update: the step calls it for each
+  //! block of points right after updating them, while they are in the cache.
   virtual double max_signal_speed(const Particles<D>& points, long begin, long end,
                                   double cell) const = 0;
   //! Stored (recoverable) elastic energy of the points.
