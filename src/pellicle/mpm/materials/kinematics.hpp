@@ -32,8 +32,9 @@ inline Sym<D> strain_increment(const Mat<D>& L, double hoop_rate, double dt) {
 }
 
 //! σ + Δt (W σ − σ W), W = ½ (L − Lᵀ): the rotational part of the Jaumann update (eq 14).
+//! Always inlined: in 3D GCC otherwise calls it, with σ and L passed through memory.
 template <int D>
-inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
+[[gnu::always_inline]] inline Sym<D> jaumann_rotate(const Sym<D>& s, const Mat<D>& L, double dt) {
   if constexpr (D == 2) {
     const double w = 0.5 * dt * (L(1, 0) - L(0, 1));  // W_yx Δt
     return Sym<2>(s[0] - 2.0 * w * s[3], s[1] + 2.0 * w * s[3], s[2], s[3] + w * (s[0] - s[1]));

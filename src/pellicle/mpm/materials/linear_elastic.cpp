@@ -26,35 +26,54 @@ double LinearElastic<D>::wave_modulus() const {
 }
 
 template <int D>
-inline Sym<D> LinearElastic<D>::increment(Sym<D>& de) const {
+typename LinearElastic<D>::Law LinearElastic<D>::law() const {
+  return {this->kinematics() == Kinematics::plane_stress, young_, poisson_, lambda_, shear_};
+}
+
+template <int D>
+inline Sym<D> LinearElastic<D>::Law::increment(Sym<D>& de) const {
   if constexpr (D == 2) {
-    if (this->kinematics() == Kinematics::plane_stress) {
+    if (plane_stress) {
       // σ_zz = 0: in-plane plane-stress law, and the thickness strain that goes with it.
-      const double c = young_ / (1.0 - poisson_ * poisson_);
-      de[2] = -poisson_ / (1.0 - poisson_) * (de[0] + de[1]);
-      return Sym<2>(c * (de[0] + poisson_ * de[1]), c * (poisson_ * de[0] + de[1]), 0.0,
-                    2.0 * shear_ * de[3]);  // from values (kinematics.hpp: store forwarding)
+      const double c = young / (1.0 - poisson * poisson);
+      de[2] = -poisson / (1.0 - poisson) * (de[0] + de[1]);
+      return Sym<2>(c * (de[0] + poisson * de[1]), c * (poisson * de[0] + de[1]), 0.0,
+                    2.0 * shear * de[3]);  // from values (kinematics.hpp: store forwarding)
     }
   }
   // T : Δε of eq 14 for the isotropic law, 2μ Δε + λ tr(Δε) I (3D is always solid).
-  return add_to_normal<D>(2.0 * shear_ * de, lambda_ * trace<D>(de));
+  return add_to_normal<D>(2.0 * shear * de, lambda * trace<D>(de));
 }
 
 template <int D>
 Sym<D> LinearElastic<D>::stress_increment(Sym<D>& de) const {
-  return increment(de);
+  return law().increment(de);
 }
 
 template <int D>
 void LinearElastic<D>::update(const MaterialStep<D>& step) const {
-  auto& pts = step.points;
-  auto& strain = pts[this->strain_];
-  const bool axisymmetric = this->kinematics() == Kinematics::axisymmetric;
-  for (long p = step.begin; p < step.end; ++p) {
-    const Mat<D>& L = step.velocity_gradient[p];
-    Sym<D> de = strain_increment<D>(L, axisymmetric ? step.hoop_rate[p] : 0.0, step.dt);
-    const Sym<D> ds = increment(de);
-    pts.stress[p] = jaumann_rotate<D>(pts.stress[p], L, step.dt) + ds;
+  Sym<D>* stress = step.points.stress.data();
+  Sym<D>* strain = step.points[this->strain_].data();
+  if (this->kinematics() == Kinematics::axisymmetric)
+    update_points<true>(law(), step, stress, strain);
+  else
+    update_points<false>(law(), step, stress, strain);
+}
+
+template <int D>
+template <bool Axisymmetric>
+void LinearElastic<D>::update_points(const Law law, const MaterialStep<D>& step, Sym<D>* stress,
+                                     Sym<D>* strain) {
+  // Copies, so the stores below cannot be taken to change them.
+  const BlockValues<Mat<D>> gradient = step.velocity_gradient;
+  const BlockValues<double> hoop_rate = step.hoop_rate;
+  const double dt = step.dt;
+  const long end = step.end;
+  for (long p = step.begin; p < end; ++p) {
+    const Mat<D>& L = gradient[p];
+    Sym<D> de = strain_increment<D>(L, Axisymmetric ? hoop_rate[p] : 0.0, dt);
+    const Sym<D> ds = law.increment(de);
+    stress[p] = jaumann_rotate<D>(stress[p], L, dt) + ds;
     strain[p] += de;
   }
 }
@@ -80,7 +99,7 @@ double LinearElastic<D>::strain_energy(const Particles<D>& points, long begin, l
 template <int D>
 Sym<D> LinearElastic<D>::stress_from_strain(const Sym<D>& strain) const {
   Sym<D> e = strain;
-  return increment(e);
+  return law().increment(e);
 }
 
 template <int D>

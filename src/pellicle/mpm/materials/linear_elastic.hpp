@@ -33,8 +33,18 @@ class LinearElastic final : public Material<D> {
   double wave_modulus() const;
 
  private:
-  //! stress_increment(), always inlined into update(): the increments then stay in registers.
-  [[gnu::always_inline]] Sym<D> increment(Sym<D>& strain_increment) const;
+  //! The constants of C : Δε as values: a loop holds them in registers, where members of
+  //! `this` would be read again after every store to a column (they might alias).
+  struct Law {
+    bool plane_stress;
+    double young, poisson, lambda, shear;
+    //! stress_increment(), always inlined into the update loop: the increments then stay in
+    //! registers.
+    [[gnu::always_inline]] Sym<D> increment(Sym<D>& strain_increment) const;
+  };
+  Law law() const;
+  template <bool Axisymmetric>
+  static void update_points(Law law, const MaterialStep<D>& step, Sym<D>* stress, Sym<D>* strain);
 
   double density_, young_, poisson_, lambda_, shear_;
 };
