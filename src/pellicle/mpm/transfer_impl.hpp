@@ -240,6 +240,8 @@ class TransferImpl final : public Transfer<D> {
     const double alpha = options_.update == VelocityUpdate::flip    ? 1.0
                          : options_.update == VelocityUpdate::blend ? options_.flip_fraction
                                                                     : 0.0;
+    // APIC (α = 0) takes the Lagrangian velocity alone: no FLIP increment to gather.
+    constexpr bool with_change = !Apic;
     Mat<D>* affine_out = Apic ? points[affine_].data() : nullptr;
     double* heat = Heat ? points[heat_].data() : nullptr;
     const double h = grid.cell();
@@ -263,15 +265,13 @@ class TransferImpl final : public Transfer<D> {
         // L = Σ v_i ∇N_iᵀ and for APIC either Σ N_i v_i indexᵢᵀ (B-splines: C' = (Σ N_i v_i
         // dx_iᵀ) D⁻¹ with dx_i = (offset + index_i) h) or Σ v_i ∇N_iᵀ (the gradient form).
         const StencilRows<D, Kernel> rows(s, strides);
-        const double *v_rows[R], *change_rows[R];
+        const double* v_rows[R];
         rows.blocks(grid.velocity, v_rows);
-        rows.blocks(grid.velocity_change, change_rows);
         const auto weight = [&](int r) { return rows.row[r].weight; };
-        double sum_v[K], sum_change[K];
+        double sum_v[K];
         double sum_index[D][K];  // e > 0: Σ_rows index_e · weight · block (B-spline APIC)
         double sum_grad[D][K];   // e > 0: Σ_rows grad_e · block (L, gradient-form APIC)
         sum_blocks(v_rows, weight, sum_v);
-        sum_blocks(change_rows, weight, sum_change);
         for (int e = 1; e < D; ++e) {
           if constexpr (Apic && bspline_moment)
             sum_blocks(
@@ -281,9 +281,15 @@ class TransferImpl final : public Transfer<D> {
             sum_blocks(
                 v_rows, [&](int r) { return rows.row[r].grad[e]; }, sum_grad[e]);
         }
-        double v_lagrangian[D], v_change[D];
+        double v_lagrangian[D], v_change[D] = {};
         contract_block<D, W>(sum_v, s.w[0], v_lagrangian);
-        contract_block<D, W>(sum_change, s.w[0], v_change);
+        if constexpr (with_change) {  // the FLIP increment Σ N_i Δv_i
+          const double* change_rows[R];
+          rows.blocks(grid.velocity_change, change_rows);
+          double sum_change[K];
+          sum_blocks(change_rows, weight, sum_change);
+          contract_block<D, W>(sum_change, s.w[0], v_change);
+        }
         double L[D][D];  // L[e]: column e, with_grad only
         if constexpr (with_grad) {
           contract_block<D, W>(sum_v, s.dw[0], L[0]);
@@ -324,7 +330,8 @@ class TransferImpl final : public Transfer<D> {
         Vec<D> x, v;
         for (int i = 0; i < D; ++i) {
           x[i] = points.position[p][i] + dt * v_lagrangian[i];
-          v[i] = alpha * (v_old[i] + v_change[i]) + (1.0 - alpha) * v_lagrangian[i];
+          v[i] = with_change ? alpha * (v_old[i] + v_change[i]) + (1.0 - alpha) * v_lagrangian[i]
+                             : v_lagrangian[i];
         }
         // A point on a wall or symmetry face (a membrane's end on a symmetry plane) stays on
         // it: the mirrored ghosts cancel its normal velocity only to round-off. (A copy goes
