@@ -276,13 +276,15 @@ void Simulation<D>::materials(double dt) {
   // Per block of points, the kinematics, the material update and the block's largest signal
   // speed (the next step's CFL speed), so the velocity gradient is used while it is in the
   // cache and never stored for every point, and no pass over the points of its own finds the
-  // signal speed.
+  // signal speed. The blocks go to whichever thread is free (a block's results do not depend
+  // on the thread, and the minimum and maximum below on no order), so a thread slowed down by
+  // something else on its core does not hold the others at the stage's end.
   long first_bad = std::numeric_limits<long>::max();
   double wave = 0.0;
 #pragma omp parallel reduction(min : first_bad) reduction(max : wave)
   {
     BlockScratch& scratch = block_scratch_[omp_get_thread_num()];
-#pragma omp for schedule(static)
+#pragma omp for schedule(dynamic)
     for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
       const PointBlock& block = blocks_[i];
       const auto& body = points_.bodies[block.body];
@@ -335,7 +337,7 @@ void Simulation<D>::settle_cell_densities(double dt) {
   settled_gradient_.resize(points_.size());
   if (settings_.kinematics == Kinematics::axisymmetric) settled_hoop_rate_.resize(points_.size());
   long first_bad = std::numeric_limits<long>::max();
-#pragma omp parallel for schedule(static) reduction(min : first_bad)
+#pragma omp parallel for schedule(dynamic) reduction(min : first_bad)  // as in materials()
   for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
     const PointBlock& block = blocks_[i];
     if (!materials_[points_.bodies[block.body].material]->density_from_cells()) continue;
