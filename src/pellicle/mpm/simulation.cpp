@@ -312,8 +312,7 @@ void Simulation<D>::materials(double dt) {
                   Sym<D>::Zero());
       else
         material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
-      wave =
-          std::max(wave, material.max_signal_speed(points_, block.begin, block.end, grid().cell()));
+      wave = std::max(wave, wave_speed(block));
     }
   }
   gradients_settled_ = false;
@@ -443,13 +442,15 @@ template <int D>
 double Simulation<D>::local_max_wave_speed() const {
   double wave = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : wave)
-  for (long i = 0; i < static_cast<long>(blocks_.size()); ++i) {
-    const PointBlock& block = blocks_[i];
-    const Material<D>& material = *materials_[points_.bodies[block.body].material];
-    wave =
-        std::max(wave, material.max_signal_speed(points_, block.begin, block.end, grid().cell()));
-  }
+  for (long i = 0; i < static_cast<long>(blocks_.size()); ++i)
+    wave = std::max(wave, wave_speed(blocks_[i]));
   return wave;
+}
+
+template <int D>
+double Simulation<D>::wave_speed(const PointBlock& block) const {
+  const Material<D>& material = *materials_[points_.bodies[block.body].material];
+  return material.max_signal_speed(points_, block.begin, block.end, grid().cell());
 }
 
 template <int D>

@@ -209,6 +209,8 @@ class Simulation final : private Stages {
     long begin, end;
   };
   std::vector<PointBlock> blocks_;
+  //! The largest material wave speed of a block's points.
+  double wave_speed(const PointBlock& block) const;
   //! Each thread's velocity gradients (and hoop rates) of the block it works on.
   struct BlockScratch {
     std::vector<Mat<D>> gradient;
