@@ -37,14 +37,14 @@ void stage(benchmark::State& state, Stage which) {
   const double dt = 1e-12;
   const long n = points.size();
   std::vector<Mat<D>> gradient(n, Mat<D>::Zero());
-  transfer.compute_stencils(points, grid);
+  transfer.compute_stencils(points, grid, {});
   transfer.to_grid(points, simulation->gravity(), grid, true);
   grid.integrate(dt);
   PointFailure failure;
   for (auto _ : state) {
     switch (which) {
       case Stage::stencils:
-        transfer.compute_stencils(points, grid);
+        transfer.compute_stencils(points, grid, {});
         break;
       case Stage::to_grid:
         transfer.to_grid(points, simulation->gravity(), grid, true);

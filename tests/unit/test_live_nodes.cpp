@@ -1,8 +1,9 @@
 // Live nodes (docs/theory/performance.md, "Live nodes"): the grid passes visit per row only
 // the span of nodes a step may write. Checked here: a restart clears what the last step wrote
 // and keeps nothing else, the live set is closed under the ghost mirrors of constrained faces
-// (so folding and mirroring stay inside it), marked nodes join it, and the momentum update
-// over the live nodes gives every node of the grid what the update over all nodes gives.
+// (so folding and mirroring stay inside it), marked nodes join it, the momentum update
+// over the live nodes gives every node of the grid what the update over all nodes gives, and
+// each body's own field (contact) holds only the nodes of its own points' stencils.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -191,7 +192,7 @@ void expect_stencils_live(int threads) {
       for (int d = 0; d < D; ++d) x[d] = k < 40 ? (d == 0 ? 0.3 + 0.01 * k : 0.4) : u(rng);
       points.add(x, Vec<D>::Zero(), 1.0, 1.0);
     }
-    transfer->compute_stencils(points, grid);
+    transfer->compute_stencils(points, grid, {});
     transfer->to_grid(points, Vec<D>::Zero(), grid, false);
     std::vector<long> reached;
     transfer->touched_nodes(grid, 0, points.size(), reached);
@@ -210,6 +211,75 @@ TEST(LiveNodes, StencilsOfEveryKernelAreLive) {
   for (int threads : {1, 2}) {
     expect_stencils_live<2>(threads);
     expect_stencils_live<3>(threads);
+  }
+}
+
+//! Two bodies, each scattered into its own field over its point range (contact models' fields
+//! per body): each field's live nodes are those of its own points' stencils, not the other
+//! body's, and with 2 or 3 threads (the threads' node shares found while anchoring) the fields
+//! hold what one thread gives. Points in random order, so the threads' shares overlap.
+template <int D>
+void expect_body_fields_own_nodes(int threads) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto& kernel = kernel_choices<D>()[0];
+  Particles<D> points;
+  for (int b = 0; b < 2; ++b) {
+    points.bodies.push_back(
+        {b == 0 ? "left" : "right", 0, Vec<D>::Zero(), points.size(), 0, nullptr});
+    for (int k = 0; k < 300; ++k) {
+      Vec<D> x, v;
+      for (int d = 0; d < D; ++d) x[d] = 0.1 + 0.3 * u(rng), v[d] = u(rng) - 0.5;
+      x[0] += 0.5 * b;  // left: x < 0.4; right: x > 0.6
+      points.add(x, v, 1.0 + u(rng), 1.0);
+    }
+    points.bodies.back().end = points.size();
+  }
+  const std::vector<PointRange> ranges = {{0, 300}, {300, 600}};
+  const Vec<D> gravity = Vec<D>::Constant(-1.0);
+  // Scatters each body into its own field with `threads` threads; `told` whether
+  // compute_stencils hears of the ranges.
+  auto scatter = [&](int team, bool told) {
+    TransferOptions options;
+    options.kinematics = D == 2 ? Kinematics::plane_strain : Kinematics::solid;
+    auto transfer = kernel.make(options, 2.0);
+    transfer->declare_columns(points);
+    std::vector<Grid<D>> fields(2, walled_grid<D>(1.0 / 16));
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(team);
+    transfer->compute_stencils(points, fields[0], told ? ranges : std::vector<PointRange>{});
+    for (int b = 0; b < 2; ++b) transfer->to_grid(points, gravity, fields[b], true, ranges[b]);
+    omp_set_num_threads(before);
+    return std::pair(std::move(transfer), std::move(fields));
+  };
+  const auto [one, one_thread] = scatter(1, true);
+  const auto [transfer, fields] = scatter(threads, true);
+  const auto [untold_transfer, untold] = scatter(threads, false);
+  for (int b = 0; b < 2; ++b) {
+    std::vector<long> own, other;
+    transfer->touched_nodes(fields[b], ranges[b].begin, ranges[b].end, own);
+    transfer->touched_nodes(fields[b], ranges[1 - b].begin, ranges[1 - b].end, other);
+    for (long n : own) ASSERT_TRUE(fields[b].is_live(n)) << "body " << b << " node " << n;
+    for (long n : other) ASSERT_FALSE(fields[b].is_live(n)) << "body " << b << " node " << n;
+    // Not told of the ranges: every field takes the nodes of all points, and the same sums.
+    for (long n : other) ASSERT_TRUE(untold[b].is_live(n)) << "body " << b << " node " << n;
+    for (long n = 0; n < fields[b].node_count(); ++n) {
+      const double m = one_thread[b].mass[n], tolerance = 1e-13 * (1.0 + m);
+      ASSERT_NEAR(fields[b].mass[n], m, tolerance) << "body " << b << " node " << n;
+      ASSERT_NEAR(untold[b].mass[n], m, tolerance) << "body " << b << " node " << n;
+      for (int d = 0; d < D; ++d) {
+        ASSERT_NEAR(fields[b].momentum[n][d], one_thread[b].momentum[n][d], tolerance);
+        ASSERT_NEAR(fields[b].force[n][d], one_thread[b].force[n][d], tolerance);
+        ASSERT_NEAR(untold[b].force[n][d], one_thread[b].force[n][d], tolerance);
+      }
+    }
+  }
+}
+
+TEST(LiveNodes, EachBodysFieldHoldsItsOwnNodes) {
+  for (int threads : {1, 2, 3}) {
+    expect_body_fields_own_nodes<2>(threads);
+    expect_body_fields_own_nodes<3>(threads);
   }
 }
 

@@ -49,7 +49,7 @@ struct Cloud {
     if (update == VelocityUpdate::apic)
       for (auto& c : points.template named<Mat<D>>("affine"))
         for (int i = 0; i < D * D; ++i) c.data()[i] = 4.0 * u(rng) - 2.0;
-    transfer->compute_stencils(points, grid);
+    transfer->compute_stencils(points, grid, {});
     transfer->to_grid(points, Vec<D>::Zero(), grid, false);
   }
 

@@ -71,6 +71,15 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
       (threads > 1 && partial[0].size() != cells.size()))
     partial.assign(threads - 1, std::vector<double>(cells.size(), 0.0));
   work.written.assign(partial.size(), {0, -1});
+  // The grid's values in locals: the stores into the cells could otherwise, for all the
+  // compiler knows, change them.
+  const Vec<D> lower = grid.lower();
+  int cells_along[D];
+  long reach = 0;  // flat offset from a point's first cell to its last
+  for (int d = 0; d < D; ++d) {
+    cells_along[d] = grid.cells()[d];
+    reach += 2 * cell_strides[d];
+  }
 #pragma omp parallel
   {
     const int t = omp_get_thread_num();
@@ -79,10 +88,33 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
 #pragma omp for schedule(static) nowait
     for (long p = begin; p < end; ++p) {
       // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
-      const Vec<D> u = (positions[p] - grid.lower()) * inv_h - Vec<D>::Constant(0.5);
+      const Vec<D> x = positions[p];
       double w[D][3], dw[3];
       int base[D];
-      for (int d = 0; d < D; ++d) base[d] = quadratic_bspline(u[d], w[d], dw);
+      bool interior = true;  // all 3^D cells inside the domain: nothing to fold
+      for (int d = 0; d < D; ++d) {
+        base[d] = quadratic_bspline((x[d] - lower[d]) * inv_h - 0.5, w[d], dw);
+        interior = interior && base[d] >= 0 && base[d] + 2 < cells_along[d];
+      }
+      // A cell's value is weight · Π_d w_d, multiplied in axis order.
+      double weighted[3];
+      for (int i = 0; i < 3; ++i) weighted[i] = weight[p] * w[0][i];
+      if (interior) {
+        long corner = 0;
+        for (int d = 0; d < D; ++d) corner += base[d] * cell_strides[d];
+        first = std::min(first, corner), last = std::max(last, corner + reach);
+        for (int k = 0; k < (D == 3 ? 3 : 1); ++k)
+          for (int j = 0; j < 3; ++j) {
+            double* row = out + corner + j * cell_strides[1];
+            if constexpr (D == 3) row += k * cell_strides[D - 1];
+            for (int i = 0; i < 3; ++i) {
+              double value = weighted[i] * w[1][j];
+              if constexpr (D == 3) value *= w[D - 1][k];
+              row[i] += value;
+            }
+          }
+        continue;
+      }
       // Each axis's three cells folded at the faces once per point (offset along the flat
       // index; −1 beyond a free face), not once per cell of the 3^D.
       long axis_offset[D][3];
@@ -107,7 +139,7 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
           const long row = axis_offset[1][j] + across;
           for (int i = 0; i < 3; ++i) {
             if (axis_offset[0][i] < 0) continue;
-            double value = weight[p] * w[0][i] * w[1][j];  // Π_d w_d, multiplied in axis order
+            double value = weighted[i] * w[1][j];
             if constexpr (D == 3) value *= w[D - 1][k];
             out[row + axis_offset[0][i]] += value;
           }

@@ -38,6 +38,8 @@ class GridFields {
   const Grid<D>& field(int k) const { return per_body() ? body_grids_[k] : centre_of_mass_; }
   //! The points that move in field k.
   PointRange points(int k) const { return per_body() ? body_points_[k] : PointRange{}; }
+  //! The bodies' point ranges, one per field; empty with one field for all points.
+  const std::vector<PointRange>& body_ranges() const { return body_points_; }
   Grid<D>& centre_of_mass() { return centre_of_mass_; }
   const Grid<D>& centre_of_mass() const { return centre_of_mass_; }
 

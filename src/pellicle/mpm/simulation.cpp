@@ -177,7 +177,7 @@ double Simulation<D>::time_step() {
 
 template <int D>
 void Simulation<D>::stencils() {
-  transfer_->compute_stencils(points_, grid());
+  transfer_->compute_stencils(points_, grid(), fields_.body_ranges());
 }
 
 template <int D>

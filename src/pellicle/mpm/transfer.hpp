@@ -92,8 +92,10 @@ class Transfer {
 
   //! Stage `stencils`: fix this step's stencils (node ids, weights, gradients) at the points'
   //! current positions; every stage of the step uses them, also after to_points has moved
-  //! the points.
-  virtual void compute_stencils(const Particles<D>& points, const Grid<D>& grid) = 0;
+  //! the points. `scatter_ranges`: the point ranges the step's scatters go over, one per
+  //! field (empty: all points at once).
+  virtual void compute_stencils(const Particles<D>& points, const Grid<D>& grid,
+                                const std::vector<PointRange>& scatter_ranges) = 0;
 
   //! Stage `to_grid`: zero the grid, then scatter mass and momentum (with the APIC affine
   //! term) and, when `forces`, internal and external force:

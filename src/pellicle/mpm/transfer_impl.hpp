@@ -54,51 +54,81 @@ class TransferImpl final : public Transfer<D> {
 
   std::size_t stencil_bytes() const override { return sizeof(StencilAnchor<D>); }
 
-  void compute_stencils(const Particles<D>& points, const Grid<D>& grid) override {
+  void compute_stencils(const Particles<D>& points, const Grid<D>& grid,
+                        const std::vector<PointRange>& scatter_ranges) override {
     const long n = points.size();
     anchors_.resize(n);
-    anchored_points_ = n;
+    // The anchors change, and with them what every range's stencils touch. The points are
+    // anchored range by range (a field's points, or all points at once when the ranges do
+    // not tile them), each with the static schedule its scatters use, so that each thread
+    // finds its share's nodes as it goes (thread_target) and each range its own live nodes.
+    range_nodes_.clear();
+    bool tiled = !scatter_ranges.empty();
+    long next = 0;
+    for (const PointRange& range : scatter_ranges) {
+      tiled = tiled && range.begin == next;
+      next = range.last(n);
+    }
+    if (tiled && next == n) {
+      for (const PointRange& range : scatter_ranges) range_nodes(range.begin, range.last(n));
+    } else {
+      range_nodes(0, n);
+    }
+    const int ranges = static_cast<int>(range_nodes_.size());
     const long rows = grid.row_count();
-    thread_spans_.resize(omp_get_max_threads());
+    thread_spans_.resize(static_cast<std::size_t>(omp_get_max_threads()) * ranges);
+    int team = 1;
     bool inside = true;
 #pragma omp parallel reduction(&& : inside)
     {
-      // With threads, each one's node range for the scatters over all points (thread_target),
-      // from the same static share of the points, so the scatters need not read the anchors
-      // an extra time to find it.
-      const bool ranges = omp_get_num_threads() > 1;
-      long lo = std::numeric_limits<long>::max(), hi = -1;
-      // The live nodes (Grid::restart_live): per first row of the stencils, the span they
-      // reach.
-      std::vector<NodeSpan>& spans = thread_spans_[omp_get_thread_num()];
-      spans.assign(rows, NodeSpan{});
-      RowReach reach;
+      const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+      if (t == 0) team = threads;
+      for (int r = 0; r < ranges; ++r) {
+        RangeNodes& nodes = range_nodes_[r];
+        // The live nodes (Grid::restart_live): per first row of the stencils, the span they
+        // reach.
+        std::vector<NodeSpan>& spans = thread_spans_[t * ranges + r];
+        spans.assign(rows, NodeSpan{});
+        RowReach reach;
+        long lo = std::numeric_limits<long>::max(), hi = -1;
 #pragma omp for schedule(static) nowait
-      for (long p = 0; p < n; ++p) {
-        anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
-        if (ranges) extend_node_range(grid, anchors_[p], lo, hi);
-        reach.add(grid, anchors_[p], spans);
+        for (long p = nodes.begin; p < nodes.end; ++p) {
+          anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
+          if (threads > 1) extend_node_range(grid, anchors_[p], lo, hi);
+          reach.add(grid, anchors_[p], spans);
+        }
+        reach.flush(grid, spans);
+        inside = inside && reach.inside;
+        if (threads > 1) {
+          nodes.per_thread[t] = {lo, hi};
+          if (t == 0) nodes.threads = threads;
+        }
       }
-      reach.flush(grid, spans);
-      inside = reach.inside;
-#pragma omp single
-      anchored_ranges_.assign(omp_get_num_threads(), {0, -1});
-      anchored_ranges_[omp_get_thread_num()] = {lo, hi};
     }
     // A point outside the storage is stopped by the step's checks; until then every node is
     // live (an empty list).
-    anchored_spans_.clear();
+    all_spans_.clear();
     if (!inside) return;
-    anchored_spans_ = thread_spans_[0];
-    for (int t = 1; t < static_cast<int>(thread_spans_.size()); ++t)
-      for (long r = 0; r < rows; ++r)
-        anchored_spans_[r].add(thread_spans_[t][r].first, thread_spans_[t][r].last);
-    stencil_spans(grid, anchored_spans_);
+    for (int r = 0; r < ranges; ++r) {
+      std::vector<NodeSpan>& spans = range_nodes_[r].spans;
+      spans = thread_spans_[r];
+      for (int t = 1; t < team; ++t)
+        for (long row = 0; row < rows; ++row)
+          spans[row].add(thread_spans_[t * ranges + r][row].first,
+                         thread_spans_[t * ranges + r][row].last);
+      stencil_spans(grid, spans);
+      if (r == 0) {
+        all_spans_ = spans;
+      } else {
+        for (long row = 0; row < rows; ++row)
+          all_spans_[row].add(spans[row].first, spans[row].last);
+      }
+    }
   }
 
   void to_grid(const Particles<D>& points, const Vec<D>& gravity, Grid<D>& grid, bool forces,
                PointRange range) override {
-    grid.restart_live(anchored_spans_);
+    grid.restart_live(live_spans(range.begin, range.last(points.size())));
     if (apic()) {
       if (forces)
         scatter<true, true, true>(points, gravity, grid, range);
@@ -249,13 +279,15 @@ class TransferImpl final : public Transfer<D> {
         Kernel::apic_inertia > 0.0 ? 1.0 / (Kernel::apic_inertia * h * h) : 0.0;
     double speed_squared = 0.0;  // the largest |v|²: one square root at the end
     long first_bad = std::numeric_limits<long>::max();
+    RangeNodes* nodes = nullptr;
     if (remap) {
       grid.zero_live(grid.momentum);
       buffers_.prepare(grid);
+      nodes = &range_nodes(range.begin, n);
     }
 #pragma omp parallel reduction(max : speed_squared) reduction(min : first_bad)
     {
-      const ThreadTarget target = remap ? thread_target(grid, range.begin, n) : ThreadTarget{};
+      const ThreadTarget target = remap ? thread_target(grid, *nodes) : ThreadTarget{};
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p) {
         const Stencil<D, Kernel> s = stencil(grid, p);
@@ -381,9 +413,10 @@ class TransferImpl final : public Transfer<D> {
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     const Mat<D>* affine = Affine ? points[affine_].data() : nullptr;
     buffers_.prepare(grid);
+    RangeNodes& nodes = range_nodes(range.begin, n);
 #pragma omp parallel
     {
-      const ThreadTarget target = thread_target(grid, range.begin, n);
+      const ThreadTarget target = thread_target(grid, nodes);
 #pragma omp for schedule(static) nowait
       for (long p = range.begin; p < n; ++p)
         scatter_point<WithMass, WithForce, Affine, MomentumOnly>(
@@ -402,23 +435,55 @@ class TransferImpl final : public Transfer<D> {
     bool direct = true;
   };
 
-  //! This thread's target for a scatter over points [begin, end) with a static schedule; called
-  //! by every thread of a parallel region, after buffers_.prepare().
-  ThreadTarget thread_target(Grid<D>& grid, long begin, long end) {
-    const int t = omp_get_thread_num();
+  //! What the stencils of one range of points touch (a field's points, or all points), found
+  //! by compute_stencils: per thread of a scatter over them with a static schedule, the nodes
+  //! its share touches, and the spans of nodes the range may write (Grid::restart_live). The
+  //! anchors do not change within a step, so neither do these.
+  struct RangeNodes {
+    long begin = 0, end = 0;
+    int threads = 0;  //!< the team size per_thread was found for; 0: not found yet
+    std::vector<std::pair<long, long>> per_thread;
+    std::vector<NodeSpan> spans;  //!< empty: every node live
+  };
+
+  //! The entry of the points [begin, end), added if new (its node shares are then found by
+  //! the first scatter over them). Serial.
+  RangeNodes& range_nodes(long begin, long end) {
+    const std::size_t threads = omp_get_max_threads();
+    for (RangeNodes& nodes : range_nodes_)
+      if (nodes.begin == begin && nodes.end == end && nodes.per_thread.size() >= threads)
+        return nodes;
+    range_nodes_.push_back({begin, end, 0, std::vector<std::pair<long, long>>(threads), {}});
+    return range_nodes_.back();
+  }
+
+  //! The live spans of the stencils of the points [begin, end): their own, or, for a range
+  //! compute_stencils was not told of, those of all points (empty: every node live).
+  const std::vector<NodeSpan>& live_spans(long begin, long end) const {
+    for (const RangeNodes& nodes : range_nodes_)
+      if (nodes.begin == begin && nodes.end == end && !nodes.spans.empty()) return nodes.spans;
+    return all_spans_;
+  }
+
+  //! This thread's target for a scatter over the points of `nodes` with a static schedule;
+  //! called by every thread of a parallel region, after buffers_.prepare().
+  ThreadTarget thread_target(Grid<D>& grid, RangeNodes& nodes) {
+    const int t = omp_get_thread_num(), threads = omp_get_num_threads();
     // The nodes this thread's points touch (the same static share of the points as the
     // scatter's); a lone thread writes everything into the grid and need not know.
     long lo = std::numeric_limits<long>::max(), hi = -1;
-    if (omp_get_num_threads() > 1) {
-      if (begin == 0 && end == anchored_points_ &&
-          static_cast<int>(anchored_ranges_.size()) == omp_get_num_threads()) {
-        std::tie(lo, hi) = anchored_ranges_[t];
+    if (threads > 1) {
+      if (nodes.threads == threads) {
+        std::tie(lo, hi) = nodes.per_thread[t];
       } else {
 #pragma omp for schedule(static) nowait
-        for (long p = begin; p < end; ++p) extend_node_range(grid, anchors_[p], lo, hi);
+        for (long p = nodes.begin; p < nodes.end; ++p) extend_node_range(grid, anchors_[p], lo, hi);
+        nodes.per_thread[t] = {lo, hi};
       }
       buffers_.touched(t, lo, hi);
 #pragma omp barrier
+      // Every thread has read nodes.threads before the barrier.
+      if (t == 0) nodes.threads = threads;
     }
     ThreadTarget target{buffers_.target(t, grid), true};
     target.direct = target.target.window_first <= lo && hi <= target.target.window_last;
@@ -612,12 +677,10 @@ class TransferImpl final : public Transfer<D> {
   Column<double> heat_;    //!< APIC with a thermal model: dissipated energy per mass
   Kernel kernel_;
   std::vector<StencilAnchor<D>> anchors_;  //!< per point, at the step's start positions
-  long anchored_points_ = 0;               //!< the number of points anchors_ was made for
-  //! Per thread of compute_stencils, the nodes its static share of all points touches
-  //! (only with more than one thread).
-  std::vector<std::pair<long, long>> anchored_ranges_;
-  //! The rows the anchors' stencils reach (Grid::restart_live), and each thread's share.
-  std::vector<NodeSpan> anchored_spans_;
+  std::vector<RangeNodes> range_nodes_;    //!< this step's, per point range scattered
+  //! The rows the stencils of all points reach (Grid::restart_live); per thread and range,
+  //! the spans of the stencils' first rows (compute_stencils' work).
+  std::vector<NodeSpan> all_spans_;
   std::vector<std::vector<NodeSpan>> thread_spans_;
   ScatterBuffers<D> buffers_;
 };
