@@ -58,7 +58,8 @@ long containing_cell(const Grid<D>& grid, const Vec<D>& x) {
 template <int D>
 void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
                      const std::vector<double>& weight, long begin, long end,
-                     std::vector<double>& cells, CellSpreadCopies& work) {
+                     std::vector<double>& cells, CellSpreadCopies& work,
+                     const std::vector<char>* from) {
   const double inv_h = 1.0 / grid.cell();
   long cell_strides[D];
   cell_strides[0] = 1;
@@ -74,6 +75,7 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
   // The grid's values in locals: the stores into the cells could otherwise, for all the
   // compiler knows, change them.
   const Vec<D> lower = grid.lower();
+  const char* spread_from = from != nullptr ? from->data() : nullptr;
   int cells_along[D];
   long reach = 0;  // flat offset from a point's first cell to its last
   for (int d = 0; d < D; ++d) {
@@ -89,11 +91,21 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
     for (long p = begin; p < end; ++p) {
       // Cell-centre coordinates: centre c sits at c + ½ cells from the lower corner.
       const Vec<D> x = positions[p];
-      double w[D][3], dw[3];
+      double u[D];
       int base[D];
+      long first_cell = 0;  // in `from`: shifted by one per axis
+      bool listed = true;   // the first cell is one `from` holds (not so on the upper faces)
+      for (int d = 0; d < D; ++d) {
+        u[d] = (x[d] - lower[d]) * inv_h - 0.5;
+        base[d] = quadratic_bspline_first(u[d]);
+        first_cell += (base[d] + 1) * cell_strides[d];
+        listed = listed && base[d] >= -1 && base[d] + 1 < cells_along[d];
+      }
+      if (spread_from != nullptr && listed && !spread_from[first_cell]) continue;
+      double w[D][3], dw[3];
       bool interior = true;  // all 3^D cells inside the domain: nothing to fold
       for (int d = 0; d < D; ++d) {
-        base[d] = quadratic_bspline((x[d] - lower[d]) * inv_h - 0.5, w[d], dw);
+        quadratic_bspline_weights(u[d], base[d], w[d], dw);
         interior = interior && base[d] >= 0 && base[d] + 2 < cells_along[d];
       }
       // A cell's value is weight · Π_d w_d, multiplied in axis order.
@@ -160,15 +172,55 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
 }
 
 template <int D>
-Vec<D> cell_gradient_at_node(const Grid<D>& grid, const std::vector<double>& cells, long node) {
+void cells_spread_from(const Grid<D>& grid, const std::vector<double>& reads,
+                       std::vector<char>& from) {
+  const long count = cell_count(grid);
+  from.resize(count);
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < count; ++c) from[c] = 0;
+    // A point with first cell f per axis spreads to f, f + 1, f + 2. For f in [−1, cells − 2]
+    // (every point inside the domain but those on an upper face, which spread_to_cells always
+    // spreads) folding maps only −1 onto 0 and `cells` onto cells − 1, so the points that reach
+    // cell c after folding are those with f in [c − 2, c] per axis.
+#pragma omp parallel for schedule(static)
+  for (long c = 0; c < count; ++c) {
+    if (!(reads[c] > 0.0)) continue;
+    long rest = c, low[D], high[D], stride[D];
+    for (int d = 0; d < D; ++d) {
+      const long n = grid.cells()[d], index = rest % n;
+      rest /= n;
+      stride[d] = d == 0 ? 1 : stride[d - 1] * grid.cells()[d - 1];
+      low[d] = std::max(index - 2, -1L) + 1;  // shifted by one
+      high[d] = std::min(index, n - 2) + 1;
+    }
+    for (long k = D == 3 ? low[D - 1] : 0; k <= (D == 3 ? high[D - 1] : 0); ++k)
+      for (long j = low[1]; j <= high[1]; ++j)
+        for (long i = low[0]; i <= high[0]; ++i) {
+          const long f = i + j * stride[1] + (D == 3 ? k * stride[D - 1] : 0);
+#pragma omp atomic write
+          from[f] = 1;
+        }
+  }
+}
+
+template <int D>
+void cells_around_node(const Grid<D>& grid, long node, long (&cells)[1 << D]) {
   // Node (I, J[, K]) of the domain touches cells I−1 and I along each axis.
   const IVec<D> index = grid.unflatten(node);
-  Vec<D> gradient = Vec<D>::Zero();
   for (int corner = 0; corner < (1 << D); ++corner) {
     int cell[D];
     for (int d = 0; d < D; ++d) cell[d] = index[d] - Grid<D>::kGhost - 1 + ((corner >> d) & 1);
-    const long flat = fold_flat(grid, cell);
-    const double value = flat < 0 ? 0.0 : cells[flat];
+    cells[corner] = fold_flat(grid, cell);
+  }
+}
+
+template <int D>
+Vec<D> cell_gradient_at_node(const Grid<D>& grid, const std::vector<double>& cells, long node) {
+  long around[1 << D];
+  cells_around_node(grid, node, around);
+  Vec<D> gradient = Vec<D>::Zero();
+  for (int corner = 0; corner < (1 << D); ++corner) {
+    const double value = around[corner] < 0 ? 0.0 : cells[around[corner]];
     for (int d = 0; d < D; ++d) gradient[d] += ((corner >> d) & 1 ? value : -value);
   }
   return gradient / ((1 << (D - 1)) * grid.cell());
@@ -180,10 +232,14 @@ template long containing_cell<2>(const Grid<2>&, const Vec<2>&);
 template long containing_cell<3>(const Grid<3>&, const Vec<3>&);
 template void spread_to_cells<2>(const Grid<2>&, const std::vector<Vec<2>>&,
                                  const std::vector<double>&, long, long, std::vector<double>&,
-                                 CellSpreadCopies&);
+                                 CellSpreadCopies&, const std::vector<char>*);
 template void spread_to_cells<3>(const Grid<3>&, const std::vector<Vec<3>>&,
                                  const std::vector<double>&, long, long, std::vector<double>&,
-                                 CellSpreadCopies&);
+                                 CellSpreadCopies&, const std::vector<char>*);
+template void cells_spread_from<2>(const Grid<2>&, const std::vector<double>&, std::vector<char>&);
+template void cells_spread_from<3>(const Grid<3>&, const std::vector<double>&, std::vector<char>&);
+template void cells_around_node<2>(const Grid<2>&, long, long (&)[4]);
+template void cells_around_node<3>(const Grid<3>&, long, long (&)[8]);
 template Vec<2> cell_gradient_at_node<2>(const Grid<2>&, const std::vector<double>&, long);
 template Vec<3> cell_gradient_at_node<3>(const Grid<3>&, const std::vector<double>&, long);
 

@@ -24,11 +24,25 @@ struct CellSpreadCopies {
   std::vector<std::pair<long, long>> written;  //!< per copy, the cells a spread wrote to
 };
 //! cells[c] += Σ_p weight[p] S(x_c − x_p) over the points [begin, end); `cells` must have
-//! cell_count() entries.
+//! cell_count() entries. With `from` (cell_count() entries, from cells_spread_from), only
+//! the points whose first cell is marked in it spread: the cells their spread reaches hold
+//! the full sums, the others partial ones.
 template <int D>
 void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
                      const std::vector<double>& weight, long begin, long end,
-                     std::vector<double>& cells, CellSpreadCopies& work);
+                     std::vector<double>& cells, CellSpreadCopies& work,
+                     const std::vector<char>* from = nullptr);
+//! The cells a point may spread from, for the values of the cells with reads[c] > 0 only:
+//! from[f] = 1 for every first cell f (per axis the first of the point's three cells, −1 to
+//! cells − 2, stored shifted by one) whose three cells per axis reach, after folding at the
+//! faces, a cell read; 0 for all others. `from` is resized to cell_count().
+template <int D>
+void cells_spread_from(const Grid<D>& grid, const std::vector<double>& reads,
+                       std::vector<char>& from);
+//! The flat indices of the 2^D cells around grid node `node` (axis-0 bit first), after
+//! folding at the faces; −1 beyond a free face. The cells cell_gradient_at_node reads.
+template <int D>
+void cells_around_node(const Grid<D>& grid, long node, long (&cells)[1 << D]);
 //! Gradient at grid node `node` of the cell field interpolated bilinearly (trilinearly)
 //! between cell centres (the MPM gradient operator on the dual grid, IJNME eq 28). Cells
 //! beyond a constrained face mirror the inside, beyond a free face they are empty.

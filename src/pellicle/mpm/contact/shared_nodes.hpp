@@ -67,7 +67,8 @@ class SharedNodes {
   const std::vector<Vec<D>>& contact_force() const { return contact_force_; }
 
   //! Each body's colour function from its points (eq 27 / 9.10), completed by the hooks'
-  //! after_cell_spread: at the start of a step, for both passes' normals.
+  //! after_cell_spread: at the start of a step, for both passes' normals. It holds the full
+  //! sums on the cells around the shared nodes, which are all the sweeps read.
   void colour_functions(Simulation<D>& simulation);
 
   //! Apply `rule(SharedNode&)` at every node shared by two or more bodies: it sets the
@@ -80,8 +81,24 @@ class SharedNodes {
 
  private:
   Vec<D> outward_normal(const Grid<D>& grid, int body, long node) const;
+  //! grids_ at the bodies' fields.
+  void point_at_fields(GridFields<D>& fields) {
+    grids_.resize(fields.count());
+    for (int b = 0; b < fields.count(); ++b) grids_[b] = &fields.field(b);
+  }
+  //! Two or more bodies hold mass at node n (after point_at_fields).
+  bool shared(long n) const {
+    int present = 0;  // most nodes hold one body or none: stop at two
+    for (std::size_t b = 0; b < grids_.size() && present < 2; ++b)
+      present += grids_[b]->mass[n] > 0.0;
+    return present >= 2;
+  }
 
   std::vector<std::vector<double>> colour_;  //!< per body, on cell centres
+  //! The cells the sweeps read (marked > 0), and the first cells of the points that reach
+  //! them (cells_spread_from): per step, before the colour functions.
+  std::vector<double> reads_;
+  std::vector<char> spread_from_;
   CellSpreadCopies spread_copies_;
   std::vector<Vec<D>> contact_force_;
   // Work storage, sized once for the run's bodies and threads (no allocation per step).
@@ -97,8 +114,7 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
   const bool lagrangian = pass == GridPass::lagrangian;
   const Grid<D>& centre_of_mass = fields.centre_of_mass();
   const int bodies = fields.count();
-  grids_.resize(bodies);
-  for (int b = 0; b < bodies; ++b) grids_[b] = &fields.field(b);
+  point_at_fields(fields);
   const auto& grids = grids_;
   const int threads = omp_get_max_threads();
   if (static_cast<int>(nodes_.size()) != threads || nodes_.front().body.size() != grids.size()) {
@@ -117,9 +133,7 @@ void SharedNodes<D>::sweep(GridFields<D>& fields, const Particles<D>& points, do
     SharedNode<D>& node = nodes_[omp_get_thread_num()];
     // Nodes with mass are live in the centre-of-mass field (the sum of the bodies').
     centre_of_mass.for_each_live_of_thread([&](long n) {
-      int present = 0;  // most nodes hold one body or none: look before filling the node
-      for (int b = 0; b < bodies && present < 2; ++b) present += grids[b]->mass[n] > 0.0;
-      if (present < 2) return;
+      if (!shared(n)) return;  // look before filling the node
       node.count = 0;
       for (int b = 0; b < bodies; ++b) {
         const Grid<D>& g = *grids[b];
