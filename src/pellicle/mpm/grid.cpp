@@ -188,23 +188,27 @@ void Grid<D>::restart_live(const std::vector<NodeSpan>& next) {
     }
   };
   const long rows = row_count();
-#pragma omp parallel for schedule(static)
-  for (long r = 0; r < rows; ++r) {
-    const NodeSpan now = live_[r];
-    if (now.empty()) continue;
-    const long base = r * width;
-    for (long n = base + now.first; n <= base + now.last; ++n) {
-      mass[n] = 0.0;
-      momentum[n].setZero();
-      force[n].setZero();
-    }
-    // The velocities stay wherever the next live set holds them: the update rewrites them.
-    const NodeSpan kept = given ? next[r] : whole;
-    if (kept.empty()) {
-      zero_velocities(base + now.first, base + now.last);
-    } else {
-      zero_velocities(base + now.first, base + std::min(now.last, kept.first - 1));
-      zero_velocities(base + std::max(now.first, kept.last + 1), base + now.last);
+  // The rows shared by the old live set's counts: a body's own field may live in a few rows.
+#pragma omp parallel
+  {
+    const auto [r0, r1] = live_rows_of_thread();
+    for (long r = r0; r < r1; ++r) {
+      const NodeSpan now = live_[r];
+      if (now.empty()) continue;
+      const long base = r * width;
+      for (long n = base + now.first; n <= base + now.last; ++n) {
+        mass[n] = 0.0;
+        momentum[n].setZero();
+        force[n].setZero();
+      }
+      // The velocities stay wherever the next live set holds them: the update rewrites them.
+      const NodeSpan kept = given ? next[r] : whole;
+      if (kept.empty()) {
+        zero_velocities(base + now.first, base + now.last);
+      } else {
+        zero_velocities(base + now.first, base + std::min(now.last, kept.first - 1));
+        zero_velocities(base + std::max(now.first, kept.last + 1), base + now.last);
+      }
     }
   }
   if (given)

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "pellicle/core/types.hpp"
@@ -169,11 +170,8 @@ class Grid {
   //! calls it (a worksharing loop over the live nodes).
   template <class F>
   void for_each_live_of_thread(F&& f) const {
-    const int t = omp_get_thread_num(), threads = omp_get_num_threads();
-    const long rows = row_count(), width = nodes_[0];
-    const bool shared = static_cast<int>(live_parts_.size()) == threads + 1;
-    const long r0 = shared ? live_parts_[t] : rows * t / threads;
-    const long r1 = shared ? live_parts_[t + 1] : rows * (t + 1) / threads;
+    const long width = nodes_[0];
+    const auto [r0, r1] = live_rows_of_thread();
     for (long r = r0; r < r1; ++r) {
       const long begin = r * width + live_[r].first, end = r * width + live_[r].last;
       for (long n = begin; n <= end; ++n) f(n);
@@ -248,6 +246,14 @@ class Grid {
   std::vector<std::pair<long, Vec<D>>> prescribed_;
   std::vector<NodeSpan> live_;    //!< one per row
   std::vector<long> live_parts_;  //!< threads' row runs: [live_parts_[t], live_parts_[t + 1])
+  //! This thread's rows [first, last) of the live set: shared by live node counts.
+  std::pair<long, long> live_rows_of_thread() const {
+    const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+    const long rows = row_count();
+    if (static_cast<int>(live_parts_.size()) == threads + 1)
+      return {live_parts_[t], live_parts_[t + 1]};
+    return {rows * t / threads, rows * (t + 1) / threads};
+  }
   //! Grow the live spans until every mirror pair has both nodes live or neither, then share
   //! the rows out among the threads.
   void close_live();
