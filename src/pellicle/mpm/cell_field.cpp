@@ -174,14 +174,14 @@ void spread_to_cells(const Grid<D>& grid, const std::vector<Vec<D>>& positions,
 template <int D>
 void cells_spread_from(const Grid<D>& grid, const std::vector<double>& reads,
                        std::vector<char>& from) {
+  // A point with first cell f per axis spreads to f, f + 1, f + 2. For f in [−1, cells − 2]
+  // (every point inside the domain but those on an upper face, which spread_to_cells always
+  // spreads) folding maps only −1 onto 0 and `cells` onto cells − 1, so the points that reach
+  // cell c after folding are those with f in [c − 2, c] per axis.
   const long count = cell_count(grid);
   from.resize(count);
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < count; ++c) from[c] = 0;
-    // A point with first cell f per axis spreads to f, f + 1, f + 2. For f in [−1, cells − 2]
-    // (every point inside the domain but those on an upper face, which spread_to_cells always
-    // spreads) folding maps only −1 onto 0 and `cells` onto cells − 1, so the points that reach
-    // cell c after folding are those with f in [c − 2, c] per axis.
 #pragma omp parallel for schedule(static)
   for (long c = 0; c < count; ++c) {
     if (!(reads[c] > 0.0)) continue;
