@@ -197,11 +197,12 @@ template <int K, int R, class Factor>
   for (int j = 0; j < L::quads; ++j) store_lanes(sum + 4 * j, quads[j]);
   for (int j = 0; j < L::pairs; ++j) store_lanes(sum + L::pair_start + 2 * j, pairs[j]);
   if constexpr (L::single == 1) sum[K - 1] = single;
-  // Where the rows' blocks are more doubles than the vector registers hold (from 2D quadratic
-  // on), GCC loaded them once for all the sums of a point and kept them on the stack: the
-  // 3D quadratic gather spent more instructions on those copies than on its sums. After this
-  // compiler barrier each sum loads its blocks itself, folded into its multiplications.
-  if constexpr (R * K > 16) asm volatile("" ::: "memory");
+  // Where the rows' blocks are more doubles than the 16 vector registers hold (64; the 3D
+  // quadratic kernel's 81), GCC loaded them once for all the sums of a point and kept them on
+  // the stack: the 3D quadratic gather spent more instructions on those copies than on its
+  // sums. After this compiler barrier each sum loads its blocks itself, folded into its
+  // multiplications. Smaller blocks stay in registers, where the barrier only costs.
+  if constexpr (R * K > 64) asm volatile("" ::: "memory");
 }
 
 //! target[k] += Σ_j c[j] · blocks[j][k] for k < K: a row's share of a scatter, a combination
