@@ -147,6 +147,53 @@ void expect_conserved() {
   }
 }
 
+// The internal and external forces on the grid, f_i = Σ_p N_i m_p g − V_p σ_p ∇N_i (IJNME eq 16),
+// have the total Σ_p m_p g (Σ_i ∇N_i = 0) and, since every kernel reproduces linear functions
+// (Σ_i N_i x_i = x_p, Σ_i x_i ∇N_iᵀ = I), the first moment Σ_i x_i f_iᵀ = Σ_p (m_p x_p gᵀ − V_p
+// σ_p): every term of the force scatter, each stress component with its gradient direction.
+template <int D>
+void expect_force_moments() {
+  for (const auto& kernel : kernel_choices<D>()) {
+    const bool apic = kernel.offers_apic;
+    Cloud<D> c(kernel, apic ? VelocityUpdate::apic : VelocityUpdate::pic);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Vec<D> gravity;
+    for (int d = 0; d < D; ++d) gravity[d] = u(rng);
+    Mat<D> expected_moment = Mat<D>::Zero();
+    Vec<D> expected_total = Vec<D>::Zero();
+    double scale = 0.0;
+    for (long p = 0; p < c.points.size(); ++p) {
+      for (int k = 0; k < c.points.stress[p].size(); ++k) c.points.stress[p][k] = u(rng);
+      c.points.volume[p] = 0.5 + 0.5 * u(rng);
+      const Mat<D> sigma = to_mat3<D>(c.points.stress[p]).template topLeftCorner<D, D>();
+      const double m = c.points.mass[p];
+      expected_moment +=
+          m * c.points.position[p] * gravity.transpose() - c.points.volume[p] * sigma;
+      expected_total += m * gravity;
+      scale += m * gravity.norm() + c.points.volume[p] * sigma.norm();
+    }
+    c.transfer->to_grid(c.points, gravity, c.grid, true);
+    Mat<D> moment = Mat<D>::Zero();
+    Vec<D> total = Vec<D>::Zero();
+    for (long i = 0; i < c.grid.node_count(); ++i) {
+      moment += c.grid.node_position(i) * c.grid.force[i].transpose();
+      total += c.grid.force[i];
+    }
+    const std::string what = kernel.name + (apic ? " APIC " : " PIC ") + std::to_string(D) + "D";
+    EXPECT_LT((total - expected_total).norm(), 1e-12 * scale) << what;
+    EXPECT_LT((moment - expected_moment).norm(), 1e-12 * scale) << what;
+  }
+}
+
+TEST(TransferConservation, ForcesHaveTheTotalAndFirstMomentOfTheStress2D) {
+  expect_force_moments<2>();
+}
+
+TEST(TransferConservation, ForcesHaveTheTotalAndFirstMomentOfTheStress3D) {
+  expect_force_moments<3>();
+}
+
 TEST(TransferConservation, MassAndMomentumThroughTheGrid2D) {
   expect_conserved<2>();
 }

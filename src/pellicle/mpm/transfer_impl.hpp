@@ -203,29 +203,22 @@ class TransferImpl final : public Transfer<D> {
     const auto& strides = grid.strides();
     const bool axisymmetric = options_.kinematics == Kinematics::axisymmetric;
     long first_bad = -1;
-    constexpr int W = Kernel::width, K = W * D, R = StencilRows<D, Kernel>::count;
+    constexpr int W = Kernel::width;
     for (long p = begin; p < end; ++p) {
       const Stencil<D, Kernel> s = stencil(grid, p);
-      // Row blocks (stencil.hpp): L's column 0 from Σ_rows weight · block, the others from
+      // Row sums (stencil.hpp): L's column 0 from Σ_rows weight · block, the others from
       // Σ_rows grad_e · block.
-      const StencilRows<D, Kernel> rows(s, strides);
-      const double* v_rows[R];
-      rows.blocks(grid.velocity, v_rows);
-      double sum_v[K], sum_grad[D][K];
-      sum_blocks(
-          v_rows, [&](int r) { return rows.row[r].weight; }, sum_v);
-      for (int e = 1; e < D; ++e)
-        sum_blocks(
-            v_rows, [&](int r) { return rows.row[r].grad[e]; }, sum_grad[e]);
+      RowSums<D, W> rows;
+      sum_rows<false, true>(s, strides, grid.velocity, rows);
       double L[D][D];  // L[e]: column e
-      contract_block<D, W>(sum_v, s.dw[0], L[0]);
-      for (int e = 1; e < D; ++e) contract_block<D, W>(sum_grad[e], s.w[0], L[e]);
+      contract_block<D, W>(rows.value, s.dw[0], L[0]);
+      for (int e = 1; e < D; ++e) contract_block<D, W>(rows.grad[e], s.w[0], L[e]);
       store_gradient(L, gradient[p - begin]);
       double volumetric = 0.0;
       for (int i = 0; i < D; ++i) volumetric += L[i][i];
       if (axisymmetric) {
         double v_radial = 0.0;  // Σ N_i v_i,r
-        for (int a = 0; a < W; ++a) v_radial += s.w[0][a] * sum_v[a * D];
+        for (int a = 0; a < W; ++a) v_radial += s.w[0][a] * rows.value[a * D];
         hoop_rate[p - begin] = v_radial / points.position[p][0];
         volumetric += hoop_rate[p - begin];
       }
@@ -260,7 +253,7 @@ class TransferImpl final : public Transfer<D> {
   double move_points(Grid<D>& grid, double dt, Particles<D>& points, PointFailure& failure,
                      PointRange range, const PointPassExtras<D>& extras) {
     static_assert(Apic || !Heat);
-    constexpr int W = Kernel::width, K = W * D, R = StencilRows<D, Kernel>::count;
+    constexpr int W = Kernel::width;
     constexpr bool bspline_moment = Kernel::apic_inertia > 0.0;
     constexpr bool with_grad = Gradient || (Apic && !bspline_moment);
     const bool remap = extras.remap;
@@ -292,47 +285,30 @@ class TransferImpl final : public Transfer<D> {
       for (long p = range.begin; p < n; ++p) {
         const Stencil<D, Kernel> s = stencil(grid, p);
         const Vec<D> v_old = points.velocity[p];
-        // Row blocks (stencil.hpp): the rows' velocity blocks summed with the factors of the
+        // Row sums (stencil.hpp): the rows' velocity blocks summed with the factors of the
         // other axes, then contracted with the axis-0 weights: v_L = Σ N_i v_i, Δv = Σ N_i Δv_i,
         // L = Σ v_i ∇N_iᵀ and for APIC either Σ N_i v_i indexᵢᵀ (B-splines: C' = (Σ N_i v_i
         // dx_iᵀ) D⁻¹ with dx_i = (offset + index_i) h) or Σ v_i ∇N_iᵀ (the gradient form).
-        const StencilRows<D, Kernel> rows(s, strides);
-        const double* v_rows[R];
-        rows.blocks(grid.velocity, v_rows);
-        const auto weight = [&](int r) { return rows.row[r].weight; };
-        double sum_v[K];
-        double sum_index[D][K];  // e > 0: Σ_rows index_e · weight · block (B-spline APIC)
-        double sum_grad[D][K];   // e > 0: Σ_rows grad_e · block (L, gradient-form APIC)
-        sum_blocks(v_rows, weight, sum_v);
-        for (int e = 1; e < D; ++e) {
-          if constexpr (Apic && bspline_moment)
-            sum_blocks(
-                v_rows, [&](int r) { return rows.row[r].index[e] * rows.row[r].weight; },
-                sum_index[e]);
-          if constexpr (with_grad)
-            sum_blocks(
-                v_rows, [&](int r) { return rows.row[r].grad[e]; }, sum_grad[e]);
-        }
+        RowSums<D, W> rows;
+        sum_rows<Apic && bspline_moment, with_grad>(s, strides, grid.velocity, rows);
         double v_lagrangian[D], v_change[D] = {};
-        contract_block<D, W>(sum_v, s.w[0], v_lagrangian);
+        contract_block<D, W>(rows.value, s.w[0], v_lagrangian);
         if constexpr (with_change) {  // the FLIP increment Σ N_i Δv_i
-          const double* change_rows[R];
-          rows.blocks(grid.velocity_change, change_rows);
-          double sum_change[K];
-          sum_blocks(change_rows, weight, sum_change);
-          contract_block<D, W>(sum_change, s.w[0], v_change);
+          RowSums<D, W> change;
+          sum_rows<false, false>(s, strides, grid.velocity_change, change);
+          contract_block<D, W>(change.value, s.w[0], v_change);
         }
         double L[D][D];  // L[e]: column e, with_grad only
         if constexpr (with_grad) {
-          contract_block<D, W>(sum_v, s.dw[0], L[0]);
-          for (int e = 1; e < D; ++e) contract_block<D, W>(sum_grad[e], s.w[0], L[e]);
+          contract_block<D, W>(rows.value, s.dw[0], L[0]);
+          for (int e = 1; e < D; ++e) contract_block<D, W>(rows.grad[e], s.w[0], L[e]);
         }
         Mat<D> affine;
         if constexpr (Apic && bspline_moment) {
           double moment[D][D], index_w[W];  // moment[e]: column e
           for (int a = 0; a < W; ++a) index_w[a] = a * s.w[0][a];
-          contract_block<D, W>(sum_v, index_w, moment[0]);
-          for (int e = 1; e < D; ++e) contract_block<D, W>(sum_index[e], s.w[0], moment[e]);
+          contract_block<D, W>(rows.value, index_w, moment[0]);
+          for (int e = 1; e < D; ++e) contract_block<D, W>(rows.index[e], s.w[0], moment[e]);
           for (int e = 0; e < D; ++e)
             for (int i = 0; i < D; ++i)
               affine(i, e) = inertia_scale * h * (v_lagrangian[i] * s.offset[e] + moment[e][i]);
@@ -566,34 +542,75 @@ class TransferImpl final : public Transfer<D> {
           for (int e = 1; e < D; ++e) force_blocks[e][a * D + i] = -w[a] * (V * sigma(i, e));
         }
     }
-    for_each_row(s, grid.strides(), [&](const StencilRow<D>& row) {
-      double momentum_factors[J], force_factors[D];
-      momentum_factors[0] = force_factors[0] = row.weight;
-      for (int e = 1; e < J; ++e) momentum_factors[e] = row.index[e] * row.weight;
-      for (int e = 1; e < D; ++e) force_factors[e] = row.grad[e];
-      const NodeFields<D>& out = fields(row.first);
-      if (&out == &fields(row.first + W - 1)) {  // the whole row goes to one target
+    // One row's share, from its first node: mass weight · m φ₀(a), momentum Σ_j mc[j] · mb[j],
+    // force Σ_j fc[j] · fb[j].
+    const auto add_row = [&]<int JM, int JF>(long first, double weight, const double(&mc)[JM],
+                                             const double(&mb)[JM][K], const double(&fc)[JF],
+                                             const double(&fb)[JF][K]) {
+      const NodeFields<D>& out = fields(first);
+      if (&out == &fields(first + W - 1)) {  // the whole row goes to one target
         if constexpr (WithMass)
-          for (int a = 0; a < W; ++a) out.mass[row.first + a] += row.weight * mass_w[a];
-        if constexpr (with_momentum)
-          add_combination(out.momentum[row.first].data(), momentum_factors, momentum_blocks);
-        if constexpr (WithForce)
-          add_combination(out.force[row.first].data(), force_factors, force_blocks);
+          for (int a = 0; a < W; ++a) out.mass[first + a] += weight * mass_w[a];
+        if constexpr (with_momentum) add_combination(out.momentum[first].data(), mc, mb);
+        if constexpr (WithForce) add_combination(out.force[first].data(), fc, fb);
         return;
       }
       double momentum[K] = {}, force[K] = {};
-      if constexpr (with_momentum) add_combination(momentum, momentum_factors, momentum_blocks);
-      if constexpr (WithForce) add_combination(force, force_factors, force_blocks);
+      if constexpr (with_momentum) add_combination(momentum, mc, mb);
+      if constexpr (WithForce) add_combination(force, fc, fb);
       for (int a = 0; a < W; ++a) {
-        const long node = row.first + a;
+        const long node = first + a;
         const NodeFields<D>& target = fields(node);
-        if constexpr (WithMass) target.mass[node] += row.weight * mass_w[a];
+        if constexpr (WithMass) target.mass[node] += weight * mass_w[a];
         for (int i = 0; i < D; ++i) {
           if constexpr (with_momentum) target.momentum[node][i] += momentum[a * D + i];
           if constexpr (WithForce) target.force[node][i] += force[a * D + i];
         }
       }
-    });
+    };
+    if constexpr (D == 3 && W >= 3) {
+      // Plane by plane, as sum_rows: with weight = φ₁(b) φ₂(c), grad_1 = φ₁'(b) φ₂(c) and
+      // grad_2 = φ₁(b) φ₂'(c), row (b, c) gets the momentum φ₁(b) A_c + b φ₁(b) B_c (APIC)
+      // and the force φ₁(b) G_c + φ₁'(b) H_c, with the plane's blocks
+      //   A_c = φ₂(c) M₀ + c φ₂(c) M₂,  B_c = φ₂(c) M₁,  G_c = φ₂(c) F₀ + φ₂'(c) F₂,  H_c = φ₂(c)
+      //   F₁:
+      // two blocks per row for each where the row-by-row form combines three.
+      const auto& strides = grid.strides();
+      for (int c = 0; c < W; ++c) {
+        const double phi2 = s.w[2][c];
+        double plane_momentum[2][K], plane_force[2][K];  // A_c, B_c; G_c, H_c
+        if constexpr (with_momentum && Affine) {
+          combine_blocks(plane_momentum[0], {phi2, c * phi2},
+                         {momentum_blocks[0], momentum_blocks[2]});
+          combine_blocks(plane_momentum[1], {phi2}, {momentum_blocks[1]});
+        }
+        if constexpr (WithForce) {
+          combine_blocks(plane_force[0], {phi2, s.dw[2][c]}, {force_blocks[0], force_blocks[2]});
+          combine_blocks(plane_force[1], {phi2}, {force_blocks[1]});
+        }
+        for (int b = 0; b < W; ++b) {
+          const long first = s.base + b * strides[1] + c * strides[2];
+          const double weight = s.w[1][b] * phi2;
+          const double force_factors[2] = {s.w[1][b], s.dw[1][b]};
+          if constexpr (Affine) {
+            const double momentum_factors[2] = {s.w[1][b], b * s.w[1][b]};
+            add_row(first, weight, momentum_factors, plane_momentum, force_factors, plane_force);
+          } else {
+            const double momentum_factors[1] = {weight};
+            add_row(first, weight, momentum_factors, momentum_blocks, force_factors, plane_force);
+          }
+        }
+      }
+    } else {
+      for_each_row(s, grid.strides(), [&](const StencilRow<D>& row) {
+        double momentum_factors[J], force_factors[D];
+        momentum_factors[0] = force_factors[0] = row.weight;
+        for (int e = 1; e < J; ++e) momentum_factors[e] = row.index[e] * row.weight;
+        for (int e = 1; e < D; ++e) force_factors[e] = row.grad[e];
+        add_row(row.first, row.weight, momentum_factors, momentum_blocks, force_factors,
+                force_blocks);
+      });
+    }
   }
 
   //! L from its columns (L[e]: column e).

@@ -133,7 +133,8 @@ inline void for_each_row(const Stencil<D, Kernel>& s,
 //! Row blocks: the W nodes of a stencil row are consecutive in storage, so their values of a
 //! nodal vector field are K = W·D consecutive doubles (node a, component i at a·D + i). A
 //! gather sums whole blocks over the rows, each scaled by a per-row factor, and contracts the
-//! sum with the 1D weights of axis 0 once per point (docs/theory/performance.md, "Rows"). The
+//! sum with the 1D weights of axis 0 once per point; in 3D, with W ≥ 3, it sums each plane of
+//! the stencil first (sum_rows; docs/theory/performance.md, "Rows"). The
 //! block sums run on short vectors (GCC/Clang vector extensions): four lanes where the build
 //! has AVX, then two lanes (SSE2, NEON), then one double, so a block of nine doubles is two
 //! four-lane vectors and a double. Each lane sums its own element over the rows in row order,
@@ -197,12 +198,6 @@ template <int K, int R, class Factor>
   for (int j = 0; j < L::quads; ++j) store_lanes(sum + 4 * j, quads[j]);
   for (int j = 0; j < L::pairs; ++j) store_lanes(sum + L::pair_start + 2 * j, pairs[j]);
   if constexpr (L::single == 1) sum[K - 1] = single;
-  // Where the rows' blocks are more doubles than the 16 vector registers hold (64; the 3D
-  // quadratic kernel's 81), GCC loaded them once for all the sums of a point and kept them on
-  // the stack: the 3D quadratic gather spent more instructions on those copies than on its
-  // sums. After this compiler barrier each sum loads its blocks itself, folded into its
-  // multiplications. With fewer doubles (2D quadratic, 3D linear) it measured 4-12 % slower.
-  if constexpr (R * K > 64) asm volatile("" ::: "memory");
 }
 
 //! target[k] += Σ_j c[j] · blocks[j][k] for k < K: a row's share of a scatter, a combination
@@ -225,28 +220,130 @@ template <int K, int J>
   }
 }
 
+//! out[k] = Σ_j c[j] · blocks[j][k] for k < K, the terms added in order of j: a combination of
+//! blocks kept for several rows of a scatter.
+template <int K, int J>
+[[gnu::always_inline]] inline void combine_blocks(double (&out)[K], const double (&c)[J],
+                                                  const double* const (&blocks)[J]) {
+  using L = BlockLanes<K>;
+  const auto combine = [&]<class V>(int k, V) {
+    V sum = c[0] * load_lanes<V>(blocks[0] + k);
+    for (int i = 1; i < J; ++i) sum += c[i] * load_lanes<V>(blocks[i] + k);
+    store_lanes(out + k, sum);
+  };
+  for (int j = 0; j < L::quads; ++j) combine(4 * j, DoubleQuad{});
+  for (int j = 0; j < L::pairs; ++j) combine(L::pair_start + 2 * j, DoublePair{});
+  if constexpr (L::single == 1) combine(K - 1, 0.0);
+}
+
 //! out_i = Σ_a weights[a] · block[a·D + i]: a summed block contracted along axis 0.
 template <int D, int W>
 [[gnu::always_inline]] inline void contract_block(const double (&block)[W * D],
                                                   const double (&weights)[W], double (&out)[D]) {
+  if constexpr (D == 3 && W == 3 && kQuadLanes) {
+    // The block as sum_blocks stores it, two four-lane vectors and a double, contracted in
+    // registers. Loads of the triples at offsets 3 and 6 would each span two of those stores,
+    // which the store buffer cannot forward: the load waits until both reach the cache. Lane i
+    // sums (w0·b_i + w1·b_{3+i}) + w2·b_{6+i}, in the order of the loop below.
+    const DoubleQuad x =
+        load_lanes<DoubleQuad>(block) * DoubleQuad{weights[0], weights[0], weights[0], weights[1]};
+    const DoubleQuad y = load_lanes<DoubleQuad>(block + 4) *
+                         DoubleQuad{weights[1], weights[1], weights[2], weights[2]};
+    const DoubleQuad z{weights[2] * block[8], 0.0, 0.0, 0.0};
+    const DoubleQuad sum =
+        x + __builtin_shufflevector(x, y, 3, 4, 5, 6) + __builtin_shufflevector(y, z, 2, 3, 4, 5);
+    for (int i = 0; i < D; ++i) out[i] = sum[i];
+    return;
+  }
   for (int i = 0; i < D; ++i) out[i] = weights[0] * block[i];
   for (int a = 1; a < W; ++a)
     for (int i = 0; i < D; ++i) out[i] += weights[a] * block[a * D + i];
 }
 
-//! The rows of a stencil gathered into arrays, for sums over them (sum_blocks).
-template <int D, class Kernel>
-struct StencilRows {
-  static constexpr int count = D == 2 ? Kernel::width : Kernel::width * Kernel::width;
-  StencilRow<D> row[count];
-  StencilRows(const Stencil<D, Kernel>& s, const std::array<long, D>& strides) {
-    int r = 0;
-    for_each_row(s, strides, [&](const StencilRow<D>& one) { row[r++] = one; });
-  }
-  //! Each row's block of a nodal vector field.
-  void blocks(const std::vector<Vec<D>>& field, const double* (&out)[count]) const {
-    for (int r = 0; r < count; ++r) out[r] = row_block(field, row[r].first);
-  }
+//! A gather's sums over the rows of a stencil, for a nodal vector field f (per row, the block
+//! f_row of its W nodes): each a block of K = W·D doubles, to contract along axis 0
+//! (contract_block).
+template <int D, int W>
+struct RowSums {
+  static constexpr int K = W * D;
+  double value[K];     //!< Σ_rows weight · f_row
+  double index[D][K];  //!< e > 0: Σ_rows index_e · weight · f_row (with Index)
+  double grad[D][K];   //!< e > 0: Σ_rows grad_e · f_row (with Grad)
 };
+
+//! The row sums of `field` over the stencil s. A row's factors are products of one factor per
+//! axis e > 0: weight = φ₁(b)[·φ₂(c)]. With three or more nodes per axis the 3D sums go plane by
+//! plane, over b within each plane c of the stencil, then over c:
+//!   value    = Σ_c φ₂(c) P_c,   P_c = Σ_b φ₁(b) f_bc,
+//!   index[1] = Σ_c φ₂(c) Q_c,   Q_c = Σ_b b φ₁(b) f_bc,    index[2] = Σ_c c φ₂(c) P_c,
+//!   grad[1]  = Σ_c φ₂(c) G_c,   G_c = Σ_b φ₁'(b) f_bc,     grad[2]  = Σ_c φ₂'(c) P_c.
+//! For the quadratic kernel with both index and grad that is 14 sums of three blocks where row
+//! by row it is 5 sums of nine, and each sum's chain of additions is three long instead of
+//! nine. Otherwise (2D, the 3D linear kernel) the sums run row by row, each over all W^(D−1) rows.
+template <bool Index, bool Grad, int D, class Kernel>
+[[gnu::always_inline]] inline void sum_rows(
+    const Stencil<D, Kernel>& s, const std::type_identity_t<std::array<long, D>>& strides,
+    const std::type_identity_t<std::vector<Vec<D>>>& field, RowSums<D, Kernel::width>& out) {
+  constexpr int W = Kernel::width, K = W * D;
+  if constexpr (D == 3 && W >= 3) {
+    double P[W][K], Q[W][K], G[W][K];
+    const double *p_planes[W], *q_planes[W], *g_planes[W];
+    for (int c = 0; c < W; ++c) {
+      const double* rows[W];
+      for (int b = 0; b < W; ++b)
+        rows[b] = row_block(field, s.base + b * strides[1] + c * strides[2]);
+      sum_blocks(
+          rows, [&](int b) { return s.w[1][b]; }, P[c]);
+      if constexpr (Index)
+        sum_blocks(
+            rows, [&](int b) { return b * s.w[1][b]; }, Q[c]);
+      if constexpr (Grad)
+        sum_blocks(
+            rows, [&](int b) { return s.dw[1][b]; }, G[c]);
+      p_planes[c] = P[c], q_planes[c] = Q[c], g_planes[c] = G[c];
+    }
+    const auto phi2 = [&](int c) { return s.w[2][c]; };
+    sum_blocks(p_planes, phi2, out.value);
+    if constexpr (Index) {
+      sum_blocks(q_planes, phi2, out.index[1]);
+      sum_blocks(
+          p_planes, [&](int c) { return c * s.w[2][c]; }, out.index[2]);
+    }
+    if constexpr (Grad) {
+      sum_blocks(g_planes, phi2, out.grad[1]);
+      sum_blocks(
+          p_planes, [&](int c) { return s.dw[2][c]; }, out.grad[2]);
+    }
+  } else {
+    constexpr int R = D == 2 ? W : W * W;
+    const double* rows[R];
+    double weight[R], index[D][R], grad[D][R];
+    for (int r = 0; r < R; ++r) {
+      const int b = r % W, c = r / W;  // c = 0 in 2D
+      if constexpr (D == 2) {
+        rows[r] = row_block(field, s.base + b * strides[1]);
+        weight[r] = s.w[1][b];
+        grad[1][r] = s.dw[1][b];
+      } else {
+        rows[r] = row_block(field, s.base + b * strides[1] + c * strides[2]);
+        weight[r] = s.w[1][b] * s.w[2][c];
+        grad[1][r] = s.dw[1][b] * s.w[2][c];
+        grad[2][r] = s.w[1][b] * s.dw[2][c];
+        index[2][r] = c * weight[r];
+      }
+      index[1][r] = b * weight[r];
+    }
+    sum_blocks(
+        rows, [&](int r) { return weight[r]; }, out.value);
+    for (int e = 1; e < D; ++e) {
+      if constexpr (Index)
+        sum_blocks(
+            rows, [&](int r) { return index[e][r]; }, out.index[e]);
+      if constexpr (Grad)
+        sum_blocks(
+            rows, [&](int r) { return grad[e][r]; }, out.grad[e]);
+    }
+  }
+}
 
 }  // namespace pellicle
