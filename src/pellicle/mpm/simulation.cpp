@@ -90,6 +90,7 @@ void Simulation<D>::points_changed() {
       cell_density_ranges_.emplace_back(body.begin, body.end);
     ranges.push_back({body.begin, body.end});
   }
+  block_checks_.resize(blocks_.size());
   fields_.set_body_ranges(ranges);
 }
 
@@ -273,12 +274,13 @@ void Simulation<D>::materials(double dt) {
       if (axisymmetric) scratch.hoop_rate.resize(kBlockPoints);
     }
   }
-  // Per block of points, the kinematics, the material update and the block's largest signal
-  // speed (the next step's CFL speed), so the velocity gradient is used while it is in the
-  // cache and never stored for every point, and no pass over the points of its own finds the
-  // signal speed. The blocks go to whichever thread is free (a block's results do not depend
-  // on the thread, and the minimum and maximum below on no order), so a thread slowed down by
-  // something else on its core does not hold the others at the stage's end.
+  // Per block of points, the kinematics, the material update, the block's largest signal
+  // speed (the next step's CFL speed) and the material's check of the block's points, so the
+  // velocity gradient is used while it is in the cache and never stored for every point, and
+  // no pass over the points of its own finds the signal speed or checks the state. The blocks go to
+  // whichever thread is free (a block's results do not depend on the thread, and the minimum and
+  // maximum below on no order), so a thread slowed down by something else on its core does not hold
+  // the others at the stage's end.
   long first_bad = std::numeric_limits<long>::max();
   double wave = 0.0;
 #pragma omp parallel reduction(min : first_bad) reduction(max : wave)
@@ -289,6 +291,7 @@ void Simulation<D>::materials(double dt) {
       const PointBlock& block = blocks_[i];
       const auto& body = points_.bodies[block.body];
       const Material<D>& material = *materials_[body.material];
+      block_checks_[i] = {};
       BlockValues<Mat<D>> gradient(settled_gradient_);
       BlockValues<double> hoop_rate(settled_hoop_rate_);
       if (!material.density_from_cells()) {
@@ -307,11 +310,13 @@ void Simulation<D>::materials(double dt) {
           hoop_rate = {scratch.hoop_rate.data(), block.begin};
         }
       }
-      if (time_ >= body.cut_at)  // a cut tether: its points carry mass but no stress
+      if (time_ >= body.cut_at) {  // a cut tether: its points carry mass but no stress
         std::fill(points_.stress.begin() + block.begin, points_.stress.begin() + block.end,
                   Sym<D>::Zero());
-      else
+      } else {
         material.update({points_, gradient, hoop_rate, dt, block.begin, block.end, grid().cell()});
+        block_checks_[i] = material.check_points(points_, block.begin, block.end, grid().cell());
+      }
       wave = std::max(wave, wave_speed(block));
     }
   }
@@ -358,10 +363,19 @@ void Simulation<D>::settle_cell_densities(double dt) {
 
 template <int D>
 void Simulation<D>::check_materials() {
-  for (const auto& body : points_.bodies) {
-    if (time_ >= body.cut_at) continue;
-    const auto check =
-        materials_[body.material]->check_points(points_, body.begin, body.end, grid().cell());
+  // The blocks of a body are consecutive and in point order: its first invalid point is the
+  // first block's that has one, its thinnest point the first block's with the widest spacing.
+  std::size_t i = 0;
+  for (int b = 0; b < static_cast<int>(points_.bodies.size()); ++b) {
+    typename Material<D>::PointCheck check;
+    for (; i < blocks_.size() && blocks_[i].body == b; ++i) {
+      const auto& block = block_checks_[i];
+      if (check.invalid < 0 && block.invalid >= 0)
+        check.invalid = block.invalid, check.why = block.why;
+      if (block.spacing > check.spacing)
+        check.spacing = block.spacing, check.thinnest = block.thinnest;
+    }
+    const auto& body = points_.bodies[b];
     if (check.invalid >= 0) fail(check.invalid, check.why);
     if (check.spacing > 1.0 && !thinned_.count(body.name)) {
       thinned_.insert(body.name);  // once per body

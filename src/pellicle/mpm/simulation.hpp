@@ -174,7 +174,7 @@ class Simulation final : private Stages {
   void convected_velocities(double dt);
   void update_frames();
   void settle_cell_densities(double dt);
-  //! Each material's check of its bodies' points (and the fluids' thinning warning).
+  //! Each body's check from its blocks' (materials stage), and the fluids' thinning warning.
   void check_materials();
   double time_step(double signal_speed) const;
   //! The point with the largest wave speed (waves) or point speed (otherwise), for failures.
@@ -217,6 +217,8 @@ class Simulation final : private Stages {
     std::vector<double> hoop_rate;
   };
   std::vector<BlockScratch> block_scratch_;
+  //! Each block's material check, made by the materials stage right after the block's update.
+  std::vector<typename Material<D>::PointCheck> block_checks_;
   //! Velocity gradients (and hoop rates) computed before the materials stage: by to_points
   //! (USL, gradients_settled_) or, for fluids with cell densities, by settle_cell_densities.
   std::vector<Mat<D>> settled_gradient_;

@@ -139,7 +139,6 @@ typename Material<D>::PointCheck Fluid<D, Eos>::check_points(const Particles<D>&
     const double in_plane_trace = D == 2 ? e[0] + e[1] : e[0] + e[1] + e[2];
     return measure * std::exp(D * largest_stretch_bound<D>(e) - in_plane_trace);
   };
-#pragma omp parallel for reduction(min : first) reduction(max : most, widest) schedule(static)
   for (long p = begin; p < end; ++p) {
     const double e = energy[p];
     if (!std::isfinite(e) || (thermal && e < 0.0)) first = std::min(first, p);

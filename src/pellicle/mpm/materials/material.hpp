@@ -98,7 +98,8 @@ class Material {
   //! the continuity equation.
   virtual bool density_from_cells() const { return false; }
   //! The state of points [begin, end) the step must check: the first point the model cannot
-  //! continue from, and how thin a fluid has become.
+  //! continue from, and how thin a fluid has become. Serial, like update: the materials stage
+  //! calls it for each block right after the block's update.
   struct PointCheck {
     long invalid = -1;  //!< first point the model cannot continue from, or −1
     std::string why;    //!< what is wrong with it
