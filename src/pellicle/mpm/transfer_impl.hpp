@@ -93,6 +93,8 @@ class TransferImpl final : public Transfer<D> {
         long lo = std::numeric_limits<long>::max(), hi = -1;
 #pragma omp for schedule(static) nowait
         for (long p = nodes.begin; p < nodes.end; ++p) {
+          // The positions, last written a whole step ago, are the stream this pass waits on.
+          __builtin_prefetch(points.position.data() + p + 32);
           anchors_[p] = stencil_anchor(kernel_, grid, points.position[p]);
           if (threads > 1) extend_node_range(grid, anchors_[p], lo, hi);
           reach.add(grid, anchors_[p], spans);
