@@ -575,12 +575,12 @@ class TransferImpl final : public Transfer<D> {
       }
     };
     if constexpr (D == 3 && W >= 3) {
-      // Plane by plane, as sum_rows: with weight = φ₁(b) φ₂(c), grad_1 = φ₁'(b) φ₂(c) and
+      // Plane by plane, as sum_rows. With weight = φ₁(b) φ₂(c), grad_1 = φ₁'(b) φ₂(c) and
       // grad_2 = φ₁(b) φ₂'(c), row (b, c) gets the momentum φ₁(b) A_c + b φ₁(b) B_c (APIC)
       // and the force φ₁(b) G_c + φ₁'(b) H_c, with the plane's blocks
-      //   A_c = φ₂(c) M₀ + c φ₂(c) M₂,  B_c = φ₂(c) M₁,  G_c = φ₂(c) F₀ + φ₂'(c) F₂,  H_c = φ₂(c)
-      //   F₁:
-      // two blocks per row for each where the row-by-row form combines three.
+      //   A_c = φ₂(c) M₀ + c φ₂(c) M₂,   B_c = φ₂(c) M₁,
+      //   G_c = φ₂(c) F₀ + φ₂'(c) F₂,    H_c = φ₂(c) F₁:
+      // two blocks per row for each, where the row-by-row form combines three.
       const auto& strides = grid.strides();
       for (int c = 0; c < W; ++c) {
         const double phi2 = s.w[2][c];
