@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "pellicle/mpm/shape/kernels.hpp"
@@ -137,7 +138,8 @@ void check_row_sums(bool bitwise) {
           grad += grad_e * f;
           magnitude += std::abs(f) * (std::abs(weight) * (1 + index_e) + std::abs(grad_e));
         }
-      const double tolerance = bitwise ? 0.0 : 8.0 * 2.2e-16 * magnitude;
+      const double tolerance =
+          bitwise ? 0.0 : 8.0 * std::numeric_limits<double>::epsilon() * magnitude;
       const auto where = [&] {
         return "D = " + std::to_string(D) + ", W = " + std::to_string(W) +
                ", e = " + std::to_string(e) + ", element " + std::to_string(k);

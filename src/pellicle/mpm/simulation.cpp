@@ -277,10 +277,10 @@ void Simulation<D>::materials(double dt) {
   // Per block of points, the kinematics, the material update, the block's largest signal
   // speed (the next step's CFL speed) and the material's check of the block's points, so the
   // velocity gradient is used while it is in the cache and never stored for every point, and
-  // no pass over the points of its own finds the signal speed or checks the state. The blocks go to
-  // whichever thread is free (a block's results do not depend on the thread, and the minimum and
-  // maximum below on no order), so a thread slowed down by something else on its core does not hold
-  // the others at the stage's end.
+  // no pass over the points of its own finds the signal speed or checks the state. The blocks
+  // go to whichever thread is free (a block's results do not depend on the thread, and the
+  // minimum and maximum below on no order), so a thread slowed down by something else on its
+  // core does not hold the others at the stage's end.
   long first_bad = std::numeric_limits<long>::max();
   double wave = 0.0;
 #pragma omp parallel reduction(min : first_bad) reduction(max : wave)
