@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -15,6 +16,7 @@
 #include "pellicle/core/error.hpp"
 #include "pellicle/io/build.hpp"
 #include "pellicle/io/case.hpp"
+#include "pellicle/io/checkpoint.hpp"
 #include "pellicle/io/output.hpp"
 #include "pellicle/io/output_directory.hpp"
 #include "pellicle/io/restart.hpp"
@@ -58,8 +60,26 @@ const char* kinematics_name(Kinematics k) {
   return "";
 }
 
+//! Print the run's set-up to `out` (none: only the sums); returns the number of points. In a
+//! distributed run every rank calls it, and the points, masses and memory are every rank's.
 template <int D>
-void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
+long print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
+  const auto& p = s.points();
+  std::vector<double> sums;  // per body its points and mass, then all points and the memory
+  for (const auto& b : p.bodies) {
+    double mass = 0.0;
+    for (long i = b.begin; i < b.end; ++i) mass += p.mass[i];
+    sums.push_back(static_cast<double>(b.count()));
+    sums.push_back(mass);
+  }
+  sums.push_back(static_cast<double>(p.size()));
+  sums.push_back(static_cast<double>(s.memory_estimate_bytes()));
+  if (s.collective()) s.collective()->sum_in_rank_order(sums);
+  const long points = std::lround(sums[sums.size() - 2]);
+  const double memory = sums.back();
+  const double dt = s.planned_dt();
+  const double cfl = dt * s.max_wave_speed() / s.grid().cell();
+  if (!out) return points;
   const auto& g = s.grid();
   long cells = 1;
   for (int d = 0; d < D; ++d) cells *= g.cells()[d];
@@ -69,19 +89,18 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
                c.kernel.c_str());
   std::fprintf(out, "grid      %ld cells (", cells);
   for (int d = 0; d < D; ++d) std::fprintf(out, "%s%d", d ? " x " : "", g.cells()[d]);
-  std::fprintf(out, ") of %g m, %ld nodes with ghosts\n", g.cell(), g.node_count());
-  const auto& p = s.points();
+  long nodes = 1;  // of the whole grid (a distributed run's rank stores a window of it)
+  for (int d = 0; d < D; ++d) nodes *= g.cells()[d] + 1 + 2 * Grid<D>::kGhost;
+  std::fprintf(out, ") of %g m, %ld nodes with ghosts\n", g.cell(), nodes);
   // Plane runs carry mass per metre of depth; axisymmetric and 3D runs the whole body's.
   const char* mass_unit =
       D == 2 && c.settings.kinematics != Kinematics::axisymmetric ? "kg/m of depth" : "kg";
-  for (const auto& b : p.bodies) {
-    double mass = 0.0;
-    for (long i = b.begin; i < b.end; ++i) mass += p.mass[i];
+  for (std::size_t k = 0; k < p.bodies.size(); ++k) {
+    const auto& b = p.bodies[k];
     std::fprintf(out, "body      %-16s %8ld points, mass %.6g %s, material '%s'\n", b.name.c_str(),
-                 b.count(), mass, mass_unit, c.material_names[b.material].c_str());
+                 std::lround(sums[2 * k]), sums[2 * k + 1], mass_unit,
+                 c.material_names[b.material].c_str());
   }
-  const double dt = s.planned_dt();
-  const double cfl = dt * s.max_wave_speed() / g.cell();
   for (const auto& b : c.bodies) {
     if (!b.membrane) continue;
     std::fprintf(out,
@@ -103,19 +122,19 @@ void print_summary(const Case<D>& c, const Simulation<D>& s, std::FILE* out) {
   }
   std::fprintf(out, "contact   %s\n",
                s.contact() ? s.contact()->describe().c_str() : "single field (standard MPM)");
-  std::fprintf(out, "points    %ld in all\n", p.size());
+  std::fprintf(out, "points    %ld in all\n", points);
   std::fprintf(out, "time      end %g s, dt %.6g s (%s), CFL number %.3g, about %.0f steps\n",
                c.settings.end_time, dt, c.settings.fixed_dt > 0.0 ? "fixed" : "from cfl", cfl,
                std::ceil(c.settings.end_time / dt));
   std::fprintf(out, "memory    about %.1f MB (%.0f bytes a point, grid included)\n",
-               s.memory_estimate_bytes() / 1048576.0,
-               static_cast<double>(s.memory_estimate_bytes()) / p.size());
+               memory / 1048576.0, memory / static_cast<double>(points));
   std::fprintf(out, "output    %s\n", c.output.directory.c_str());
   if (cfl > c.settings.cfl_limit)
     std::fprintf(out,
                  "warning   CFL number c dt / h above solver.cfl_limit = %g: the run will stop at "
                  "its first step\n",
                  c.settings.cfl_limit);
+  return points;
 }
 
 //! A time step that cannot reach the end time within solver.max_steps (a body so fast or
@@ -153,16 +172,41 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
   Case<D> c = read_case<D>(source);
   if (!o.out_dir.empty()) c.output.directory = o.out_dir;
   if (o.checkpoint_interval > 0.0) c.output.checkpoint_interval = o.checkpoint_interval;
-  auto simulation = build_simulation<D>(c);
+  const bool lead = world_rank(o) == 0, distributed = world_size(o) > 1 && !check_only;
+  // A distributed run's ranks each build only the points of their patch (of the checkpoint's
+  // positions when it continues one).
+  PointSelection<D> select;
+#ifdef PELLICLE_WITH_MPI
+  std::vector<Patch<D>> patches;
+  if (distributed) {
+    SavedPositions<D> positions;
+    if (saved)
+      positions = [&o](const std::string& body) {
+        return checkpoint_positions<D>(o.restart, body);
+      };
+    select = patch_points<D>(*o.world, std::move(positions), patches);
+  }
+#endif
+  auto simulation = build_simulation<D>(c, std::move(select));
   if (saved) {
     for (const auto& name : restore_checkpoint<D>(o.restart, *simulation))
-      std::fprintf(stderr, "restart   body '%s' is new: it starts from its case state\n",
-                   name.c_str());
+      if (lead)
+        std::fprintf(stderr, "restart   body '%s' is new: it starts from its case state\n",
+                     name.c_str());
     if (simulation->finished())
       throw InputError(SourceLocation{c.file, 0, 0}, "solver.end_time",
                        "the checkpoint is at t = " + std::to_string(simulation->time()) +
                            ", not before the end time: raise solver.end_time to continue");
   }
+#ifdef PELLICLE_WITH_MPI
+  if (distributed) {
+    try {
+      distribute(*simulation, *o.world, std::move(patches));
+    } catch (const SetupError& e) {
+      throw InputError(SourceLocation{c.file, 0, 0}, "", e.what());
+    }
+  }
+#endif
   refuse_endless_runs(c, *simulation);
   std::vector<Probe<D>> probes;
   for (const auto& spec : c.probes) probes.emplace_back(spec, *simulation);
@@ -171,18 +215,8 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
     std::printf("check     ok\n");
     return kExitOk;
   }
-  const bool lead = world_rank(o) == 0, distributed = world_size(o) > 1;
-  if (!o.quiet && lead) print_summary(c, *simulation, stderr);
-  const long total_points = simulation->point_count();
-#ifdef PELLICLE_WITH_MPI
-  if (distributed) {
-    try {
-      distribute(*simulation, *o.world);
-    } catch (const SetupError& e) {
-      throw InputError(SourceLocation{c.file, 0, 0}, "", e.what());
-    }
-  }
-#endif
+  // Collective in a distributed run: every rank adds its share.
+  const long total_points = print_summary(c, *simulation, !o.quiet && lead ? stderr : nullptr);
   // Rank 0 claims the directory; the others learn whether it could.
   std::exception_ptr refused;
   if (lead) {

@@ -30,19 +30,30 @@ IVec<D> cell_of(const Grid<D>& grid, const Vec<D>& x) {
   return c;
 }
 
-//! Points per cell of the grid (this rank's points).
+//! Points per cell of the grid, none yet.
 template <int D>
-CellCounts<D> count_points(const Grid<D>& grid, const std::vector<Vec<D>>& positions) {
+CellCounts<D> no_points(const Grid<D>& grid) {
   CellCounts<D> counts{grid.cells(), {}};
   long cells = 1;
   for (int d = 0; d < D; ++d) cells *= grid.cells()[d];
   counts.points.assign(cells, 0);
-  for (const auto& x : positions) {
-    const IVec<D> c = cell_of(grid, x);
-    long flat = c[D - 1];
-    for (int d = D - 2; d >= 0; --d) flat = flat * grid.cells()[d] + c[d];
-    ++counts.points[flat];
-  }
+  return counts;
+}
+
+//! Count a point at x in its cell.
+template <int D>
+void count_point(const Grid<D>& grid, const Vec<D>& x, CellCounts<D>& counts) {
+  const IVec<D> c = cell_of(grid, x);
+  long flat = c[D - 1];
+  for (int d = D - 2; d >= 0; --d) flat = flat * grid.cells()[d] + c[d];
+  ++counts.points[flat];
+}
+
+//! Points per cell of the grid (this rank's points).
+template <int D>
+CellCounts<D> count_points(const Grid<D>& grid, const std::vector<Vec<D>>& positions) {
+  CellCounts<D> counts = no_points(grid);
+  for (const auto& x : positions) count_point(grid, x, counts);
   return counts;
 }
 
@@ -78,14 +89,22 @@ std::vector<RankOrderSums::Neighbour> cell_neighbours(const std::vector<Patch<D>
   return out;
 }
 
-//! Declare column_names::body_index and fill it: each point's index in its body as built.
+//! The patches as boxes in space (`grid`: the whole grid or a window of it), open where they
+//! reach the domain's side.
 template <int D>
-Column<double> number_points(Particles<D>& points) {
-  const auto index = points.template declare<double>({column_names::body_index, "1", true, false});
-  for (const auto& body : points.bodies)
-    for (long p = body.begin; p < body.end; ++p)
-      points[index][p] = static_cast<double>(p - body.begin);
-  return index;
+std::vector<PatchBox<D>> patch_boxes(const std::vector<Patch<D>>& patches, const Grid<D>& grid) {
+  constexpr double kOpen = std::numeric_limits<double>::infinity();
+  std::vector<PatchBox<D>> boxes;
+  for (const auto& p : patches) {
+    PatchBox<D> box;
+    for (int d = 0; d < D; ++d) {
+      box.lower[d] = p.lower[d] == 0 ? -kOpen : grid.lower()[d] + p.lower[d] * grid.cell();
+      box.upper[d] =
+          p.upper[d] == grid.cells()[d] ? kOpen : grid.lower()[d] + p.upper[d] * grid.cell();
+    }
+    boxes.push_back(box);
+  }
+  return boxes;
 }
 
 }  // namespace
@@ -107,26 +126,7 @@ void PatchRun<D>::use_patches(std::vector<Patch<D>> patches, const Grid<D>& wind
   neighbours_.clear();
   for (const auto& shared : plan) neighbours_.push_back(shared.rank);
   cell_sums_.emplace(world_, cell_neighbours(patches_, window.cells(), reach_, world_.rank()));
-  constexpr double kOpen = std::numeric_limits<double>::infinity();
-  boxes_.clear();
-  for (const auto& p : patches_) {
-    Box box;
-    for (int d = 0; d < D; ++d) {
-      box.lower[d] = p.lower[d] == 0 ? -kOpen : window.lower()[d] + p.lower[d] * window.cell();
-      box.upper[d] =
-          p.upper[d] == window.cells()[d] ? kOpen : window.lower()[d] + p.upper[d] * window.cell();
-    }
-    boxes_.push_back(box);
-  }
-}
-
-template <int D>
-int PatchRun<D>::owner(const Vec<D>& x) const {
-  const int me = world_.rank();
-  if (boxes_[me].contains(x)) return me;
-  for (std::size_t r = 0; r < boxes_.size(); ++r)
-    if (boxes_[r].contains(x)) return static_cast<int>(r);
-  return me;  // not finite: the step's checks stop the run
+  boxes_ = patch_boxes(patches_, window);
 }
 
 template <int D>
@@ -169,7 +169,7 @@ template <int D>
 void PatchRun<D>::migrate(Simulation<D>& simulation) {
   auto& points = simulation.points();
   const long n = points.size();
-  const Box& mine = boxes_[world_.rank()];
+  const PatchBox<D>& mine = boxes_[world_.rank()];
   // The points that left the patch, in ascending order (each thread's share in turn).
   leaving_.resize(omp_get_max_threads());
   for (auto& list : leaving_) list.clear();
@@ -229,32 +229,66 @@ void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& o
 }
 
 template <int D>
-const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world) {
+PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> saved,
+                               std::vector<Patch<D>>& patches) {
+  return [&world, saved = std::move(saved), &patches](const Grid<D>& grid,
+                                                      const std::vector<PlacedBody<D>>& bodies) {
+    // Each body's points where a checkpoint put them, else where they are built.
+    std::vector<std::vector<Vec<D>>> moved(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      auto at = saved ? saved(bodies[b].name) : std::nullopt;
+      if (at && at->size() == bodies[b].points.size()) moved[b] = std::move(*at);
+    }
+    auto position = [&](std::size_t b, std::size_t k) -> const Vec<D>& {
+      return moved[b].empty() ? bodies[b].points[k].first : moved[b][k];
+    };
+    CellCounts<D> counts = no_points(grid);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      for (std::size_t k = 0; k < bodies[b].points.size(); ++k)
+        count_point(grid, position(b, k), counts);
+    patches = split(counts, world.size());
+    const std::vector<PatchBox<D>> boxes = patch_boxes(patches, grid);
+    std::vector<std::vector<char>> keep(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      keep[b].resize(bodies[b].points.size());
+      for (std::size_t k = 0; k < keep[b].size(); ++k)
+        keep[b][k] = owner_of(boxes, position(b, k), world.rank()) == world.rank();
+    }
+    return keep;
+  };
+}
+
+template <int D>
+const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world,
+                              std::vector<Patch<D>> patches) {
   const Grid<D>& grid = simulation.grid();
   auto& points = simulation.points();
-  std::vector<Patch<D>> patches = split(count_points(grid, points.position), world.size());
   const int reach = simulation.transfer().node_reach();
   if (reach > Grid<D>::kGhost)
     throw SetupError("the kernel reaches " + std::to_string(reach) +
                      " node layers beyond a cell, more than the grid's ghost layers");
   const Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
-  gather_membrane_frames(world, points, number_points(points));
-  std::vector<char> keep(points.size());
-  for (long p = 0; p < points.size(); ++p)
-    keep[p] = hook->owner(points.position[p]) == world.rank();
-  keep_points(keep, points);
+  gather_membrane_frames(world, points,
+                         points.columns.template find<double>(column_names::body_index));
   simulation.use_grid_window(window, WindowCarrier<D>(grid, window, nullptr));
   simulation.points_changed();
   simulation.set_collective(&world);
   const PatchRun<D>& run = *hook;
   simulation.add_hook(std::move(hook));
+  simulation.settle_state();  // built in part: the frames now see the whole membranes
   return run;
 }
 
 template class PatchRun<2>;
 template class PatchRun<3>;
-template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&);
-template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&);
+template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&,
+                                          std::vector<Patch<2>>);
+template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&,
+                                          std::vector<Patch<3>>);
+template PointSelection<2> patch_points<2>(const Communicator&, SavedPositions<2>,
+                                           std::vector<Patch<2>>&);
+template PointSelection<3> patch_points<3>(const Communicator&, SavedPositions<3>,
+                                           std::vector<Patch<3>>&);
 
 }  // namespace pellicle

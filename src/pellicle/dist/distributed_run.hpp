@@ -1,23 +1,46 @@
 #pragma once
-//! A distributed run (DESIGN.md, "Distributed runs"): every rank builds the whole case, then
-//! keeps the points of its patch and the grid window they reach, and a hook completes the
-//! node sums after each scatter (halo_sums.hpp) and moves points that left the patch to its
-//! owner at the end of each step (migration.hpp). Cell fields (contact's colour functions,
-//! cell densities) are completed like the node sums over the cells patches share; membrane
-//! frames are computed from the whole membrane (gathered_frames.hpp). Reductions of whole-system
-//! quantities go through the communicator in rank order, so np = 1, 2, 3 … agree to round-off.
+//! A distributed run (DESIGN.md, "Distributed runs"): each rank builds only the points of its
+//! patch (the patches split from every body's points as placed) and keeps the grid window they
+//! reach, and a hook completes the node sums after each scatter (halo_sums.hpp) and moves
+//! points that left the patch to its owner at the end of each step (migration.hpp). Cell fields
+//! (contact's colour functions, cell densities) are completed like the node sums over the cells
+//! patches share; membrane frames are computed from the whole membrane (gathered_frames.hpp).
+//! Reductions of whole-system quantities go through the communicator in rank order, so np = 1, 2, 3
+//! … agree to round-off.
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "pellicle/dist/communicator.hpp"
 #include "pellicle/dist/decomposition.hpp"
 #include "pellicle/dist/halo_sums.hpp"
 #include "pellicle/dist/migration.hpp"
+#include "pellicle/mpm/builder.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
+
+//! A patch as a box in space, open where it reaches the domain's side.
+template <int D>
+struct PatchBox {
+  Vec<D> lower, upper;
+  bool contains(const Vec<D>& x) const {
+    return (x.array() >= lower.array()).all() && (x.array() < upper.array()).all();
+  }
+};
+
+//! The rank whose patch (of `boxes`) holds x; `me` when none does (x not finite: the step's
+//! checks stop the run).
+template <int D>
+int owner_of(const std::vector<PatchBox<D>>& boxes, const Vec<D>& x, int me) {
+  if (boxes[me].contains(x)) return me;
+  for (std::size_t r = 0; r < boxes.size(); ++r)
+    if (boxes[r].contains(x)) return static_cast<int>(r);
+  return me;
+}
 
 template <int D>
 class PatchRun final : public StepHook<D> {
@@ -42,16 +65,9 @@ class PatchRun final : public StepHook<D> {
 
   const std::vector<Patch<D>>& patches() const { return patches_; }
   //! The rank whose patch holds x (a patch at the domain's side reaches past it).
-  int owner(const Vec<D>& x) const;
+  int owner(const Vec<D>& x) const { return owner_of(boxes_, x, world_.rank()); }
 
  private:
-  //! The patches as boxes in space, open where they reach the domain's side.
-  struct Box {
-    Vec<D> lower, upper;
-    bool contains(const Vec<D>& x) const {
-      return (x.array() >= lower.array()).all() && (x.array() < upper.array()).all();
-    }
-  };
   void use_patches(std::vector<Patch<D>> patches, const Grid<D>& window);
   //! Send the points that left the patch to their ranks, take in the others'.
   void migrate(Simulation<D>& simulation);
@@ -61,7 +77,7 @@ class PatchRun final : public StepHook<D> {
   const Communicator& world_;
   int reach_;
   std::vector<Patch<D>> patches_;
-  std::vector<Box> boxes_;
+  std::vector<PatchBox<D>> boxes_;
   std::vector<int> neighbours_;  //!< the ranks whose patches share nodes with this one
   std::optional<HaloSums<D>> halo_;
   std::optional<RankOrderSums> cell_sums_;          //!< of the whole-grid cell fields
@@ -72,16 +88,36 @@ class PatchRun final : public StepHook<D> {
   double exchange_seconds_ = 0.0;
 };
 
-//! Split a simulation built whole on every rank over the ranks of `world`: this rank keeps its
-//! patch's points and grid window and gets the PatchRun hook. Throws SetupError when the
-//! grid is too small for that many patches or the kernel reaches beyond its ghost layers.
-//! Returns the hook.
+//! Where the checkpoint a distributed run continues from put the points of the body of this
+//! name, in the order the body was built; none when it holds no such body.
 template <int D>
-const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world);
+using SavedPositions = std::function<std::optional<std::vector<Vec<D>>>(const std::string& body)>;
+
+//! The selection (SimulationBuilder::select_points) that builds only this rank's points: the
+//! patches are split by recursive bisection of the point counts of every body, at the places
+//! the bodies' points are built or, where `saved` gives them, where a checkpoint put them, and
+//! this rank keeps the points of its patch. The split goes to `patches`, for distribute. The
+//! selection throws SetupError when the grid is too small for that many patches.
+template <int D>
+PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> saved,
+                               std::vector<Patch<D>>& patches);
+
+//! Complete a simulation built with patch_points' selection over the ranks of `world`: this
+//! rank stores the grid window its patch's points reach and gets the PatchRun hook. Throws
+//! SetupError when the kernel reaches beyond the grid's ghost layers. Returns the hook.
+template <int D>
+const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& world,
+                              std::vector<Patch<D>> patches);
 
 extern template class PatchRun<2>;
 extern template class PatchRun<3>;
-extern template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&);
-extern template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&);
+extern template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&,
+                                                 std::vector<Patch<2>>);
+extern template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&,
+                                                 std::vector<Patch<3>>);
+extern template PointSelection<2> patch_points<2>(const Communicator&, SavedPositions<2>,
+                                                  std::vector<Patch<2>>&);
+extern template PointSelection<3> patch_points<3>(const Communicator&, SavedPositions<3>,
+                                                  std::vector<Patch<3>>&);
 
 }  // namespace pellicle

@@ -53,7 +53,7 @@ void gather_membrane_frames(const Communicator& world, Particles<D>& points, Col
   for (auto& body : points.bodies)
     if (body.frames)
       body.frames =
-          std::make_shared<GatheredFrames<D>>(world, body.frames, points, index, body.count());
+          std::make_shared<GatheredFrames<D>>(world, body.frames, points, index, body.built);
 }
 
 template class GatheredFrames<2>;

@@ -35,53 +35,7 @@ void resize_points(Particles<D>& p, long n) {
   p.columns.resize(n);
 }
 
-//! Where a point of the new order comes from: a point of this rank, or a received record
-//! (its values after the body index).
-struct PointSource {
-  long point;
-  const double* data;
-};
-
-//! Lay the points out in `order`; body b takes [first[b], first[b + 1]).
-template <int D>
-void rebuild(const std::vector<PointSource>& order, const std::vector<long>& first,
-             Particles<D>& points) {
-  const long n = points.size(), m = static_cast<long>(order.size());
-  if (m > n) resize_points(points, m);
-  std::vector<double> scratch;
-  int offset = 0;
-  for (const auto& [c, data] : point_arrays(points)) {
-    scratch.resize(static_cast<std::size_t>(m) * c);
-    for (long q = 0; q < m; ++q) {
-      const double* from = order[q].point >= 0 ? data + order[q].point * c : order[q].data + offset;
-      std::memcpy(scratch.data() + q * c, from, sizeof(double) * c);
-    }
-    std::memcpy(data, scratch.data(), sizeof(double) * scratch.size());
-    offset += c;
-  }
-  if (m < n) resize_points(points, m);
-  for (std::size_t b = 0; b < points.bodies.size(); ++b) {
-    points.bodies[b].begin = first[b];
-    points.bodies[b].end = first[b + 1];
-    std::fill(points.body.begin() + first[b], points.body.begin() + first[b + 1],
-              static_cast<int>(b));
-  }
-}
-
 }  // namespace
-
-template <int D>
-void keep_points(const std::vector<char>& keep, Particles<D>& points) {
-  std::vector<PointSource> order;
-  std::vector<long> first(points.bodies.size() + 1, 0);
-  for (std::size_t b = 0; b < points.bodies.size(); ++b) {
-    first[b] = static_cast<long>(order.size());
-    for (long p = points.bodies[b].begin; p < points.bodies[b].end; ++p)
-      if (keep[p]) order.push_back({p, nullptr});
-  }
-  first.back() = static_cast<long>(order.size());
-  rebuild(order, first, points);
-}
 
 template <int D>
 long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
@@ -171,8 +125,6 @@ long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& 
   return static_cast<long>(leaving.size());
 }
 
-template void keep_points<2>(const std::vector<char>&, Particles<2>&);
-template void keep_points<3>(const std::vector<char>&, Particles<3>&);
 template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
                                 Particles<2>&, const std::vector<int>*);
 template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,

@@ -26,12 +26,6 @@ template <int D>
 long migrate_points(const Communicator& world, const std::vector<LeavingPoint>& leaving,
                     Particles<D>& points, const std::vector<int>* neighbours = nullptr);
 
-//! Keep only the points with keep[p] true (a rank's share of a case every rank built whole).
-template <int D>
-void keep_points(const std::vector<char>& keep, Particles<D>& points);
-
-extern template void keep_points<2>(const std::vector<char>&, Particles<2>&);
-extern template void keep_points<3>(const std::vector<char>&, Particles<3>&);
 extern template long migrate_points<2>(const Communicator&, const std::vector<LeavingPoint>&,
                                        Particles<2>&, const std::vector<int>*);
 extern template long migrate_points<3>(const Communicator&, const std::vector<LeavingPoint>&,

@@ -1,12 +1,11 @@
 #include "pellicle/io/build.hpp"
 
 #include "pellicle/io/problem_size.hpp"
-#include "pellicle/mpm/builder.hpp"
 
 namespace pellicle {
 
 template <int D>
-std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
+std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c, PointSelection<D> select) {
   refuse_oversized_problem(c);  // before anything is allocated
   SimulationBuilder<D> builder(c.lower, c.upper, c.cell, c.faces);
   builder.settings(c.settings).kernel(c.kernel, c.transfer).gravity(c.gravity);
@@ -15,6 +14,7 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   for (const auto& body : c.bodies) builder.body(static_cast<const BodySetup<D>&>(body));
   builder.contact(std::move(c.contact));
   for (auto& boundary : c.boundaries) builder.hook(std::move(boundary));
+  if (select) builder.select_points(std::move(select));
   try {
     return builder.build();
   } catch (const BuildError& e) {  // the same problems, at the tables they come from
@@ -31,7 +31,7 @@ std::unique_ptr<Simulation<D>> build_simulation(Case<D>& c) {
   }
 }
 
-template std::unique_ptr<Simulation<2>> build_simulation<2>(Case<2>&);
-template std::unique_ptr<Simulation<3>> build_simulation<3>(Case<3>&);
+template std::unique_ptr<Simulation<2>> build_simulation<2>(Case<2>&, PointSelection<2>);
+template std::unique_ptr<Simulation<3>> build_simulation<3>(Case<3>&, PointSelection<3>);
 
 }  // namespace pellicle

@@ -302,6 +302,8 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
   try {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
     auto& p = s.points();
+    // Built in part (a distributed run's rank): each point's row is its index in its body.
+    const Column<double> built = p.columns.template find<double>(column_names::body_index);
     Handle bodies = group(file, "bodies", false);
     const auto saved = members(bodies);
     for (const auto& body : p.bodies) {
@@ -313,11 +315,17 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
         continue;
       }
       Handle g = group(bodies, found, false);
+      std::vector<double> whole;  // a body built in part: its whole array, then this part's rows
       for_each_point_array<D>(p, body.begin, [&](const std::string& name, double* data, int k) {
-        if (!read_array(g, name, data, body.count(), k))
+        if (built.valid()) whole.resize(body.built * k);
+        if (!read_array(g, name, built.valid() ? whole.data() : data, body.built, k))
           throw InputError(where, "--restart",
                            "body '" + body.name + "': the checkpoint has no '" + name +
                                "' (the run now needs it: a model or velocity update changed)");
+        if (built.valid())
+          for (long i = body.begin; i < body.end; ++i)
+            std::copy_n(whole.data() + static_cast<long>(p[built][i]) * k, k,
+                        data + (i - body.begin) * k);
       });
     }
     for (auto& hook : s.hooks()) {
@@ -342,11 +350,37 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
   return added;
 }
 
+template <int D>
+std::optional<std::vector<Vec<D>>> checkpoint_positions(const std::string& path,
+                                                        const std::string& body) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try {
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
+    Handle bodies = group(file, "bodies", false);
+    for (const auto& g : members(bodies)) {
+      Handle saved = group(bodies, g, false);
+      if (read_text(saved, "name") != body) continue;
+      const std::vector<double> values = read_vector(saved, "position");
+      std::vector<Vec<D>> positions(values.size() / D);
+      for (std::size_t i = 0; i < positions.size(); ++i)
+        positions[i] = Vec<D>(values.data() + D * i);
+      return positions;
+    }
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
+  }
+  return std::nullopt;
+}
+
 template void write_checkpoint<2>(const std::string&, const Simulation<2>&, const CheckpointHeader&,
                                   const NodeCarrier*);
 template void write_checkpoint<3>(const std::string&, const Simulation<3>&, const CheckpointHeader&,
                                   const NodeCarrier*);
 template std::vector<std::string> restore_checkpoint<2>(const std::string&, Simulation<2>&);
 template std::vector<std::string> restore_checkpoint<3>(const std::string&, Simulation<3>&);
+template std::optional<std::vector<Vec<2>>> checkpoint_positions<2>(const std::string&,
+                                                                    const std::string&);
+template std::optional<std::vector<Vec<3>>> checkpoint_positions<3>(const std::string&,
+                                                                    const std::string&);
 
 }  // namespace pellicle

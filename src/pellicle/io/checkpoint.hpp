@@ -12,6 +12,7 @@
 //! The frame estimators draw their random points from a generator seeded per cell, so the
 //! run has no random state beyond the seed recorded in `rng`.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,11 +45,20 @@ void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
 CheckpointHeader read_checkpoint_header(const std::string& path);
 
 //! Continue `simulation` (built from the case, possibly changed) from the checkpoint: every
-//! body found in it by name takes its saved points (the point count must match), the clock
-//! and the hooks' state are restored. Returns the names of bodies the checkpoint does not
-//! hold (added by the changed case; they start from their case state). Throws InputError
-//! for a body whose point count changed or a declared column the checkpoint lacks.
+//! body found in it by name takes its saved points (the point count must match; a body built
+//! in part, as a distributed run's rank builds it, takes the rows of its points' indices in the
+//! body, column_names::body_index), the clock and the hooks' state are restored. Returns the names
+//! of bodies the checkpoint does not hold (added by the changed case; they start from their case
+//! state). Throws InputError for a body whose point count changed or a declared column the
+//! checkpoint lacks.
 template <int D>
 std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& simulation);
+
+//! The positions the checkpoint holds for the body of this name, in the order the body was
+//! built; none when it holds no such body. Throws InputError naming the file when it cannot
+//! be read.
+template <int D>
+std::optional<std::vector<Vec<D>>> checkpoint_positions(const std::string& path,
+                                                        const std::string& body);
 
 }  // namespace pellicle

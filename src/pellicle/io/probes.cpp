@@ -13,12 +13,11 @@ Probe<D>::Probe(const ProbeSpec<D>& spec, const Simulation<D>& simulation) : spe
   for (std::size_t b = 0; b < bodies.size(); ++b)
     if (bodies[b].name == spec.body) body = &bodies[b], body_ = static_cast<int>(b);
   if (!body) throw InputError(spec.where, "probe.body", "no body named \"" + spec.body + "\"");
-  for (long index : {spec.a, spec.b})
-    if (index < 0 || index >= body->count())
+  for (long index : {spec.a, spec.b})  // of the whole body, as built (a rank holds a part)
+    if (index < 0 || index >= body->built)
       throw InputError(spec.where, "probe.point",
                        "probe '" + spec.name + "': body '" + spec.body + "' has no point " +
-                           std::to_string(index) + " (it has " + std::to_string(body->count()) +
-                           ")");
+                           std::to_string(index) + " (it has " + std::to_string(body->built) + ")");
   a_ = body->begin + spec.a;
   b_ = body->begin + spec.b;
 }

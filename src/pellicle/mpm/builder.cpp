@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include <Eigen/Geometry>
@@ -75,6 +76,12 @@ SimulationBuilder<D>& SimulationBuilder<D>::contact(std::unique_ptr<ContactModel
 template <int D>
 SimulationBuilder<D>& SimulationBuilder<D>::hook(std::unique_ptr<StepHook<D>> hook) {
   hooks_.push_back(std::move(hook));
+  return *this;
+}
+
+template <int D>
+SimulationBuilder<D>& SimulationBuilder<D>::select_points(PointSelection<D> select) {
+  select_ = std::move(select);
   return *this;
 }
 
@@ -162,7 +169,10 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     problems.push_back({-1, "velocity_update", "APIC is not offered with kernel " + kernel_});
   if (bodies_.empty()) problems.push_back({-1, "body", "no body"});
 
-  Grid<D> grid(lower_, upper_, cell_, faces_);
+  // Built in part (a distributed run's rank), the simulation stores only its window of the
+  // grid, which it takes once its patch is known.
+  Grid<D> grid = select_ ? Grid<D>::without_storage(lower_, upper_, cell_, faces_)
+                         : Grid<D>(lower_, upper_, cell_, faces_);
   const std::vector<MirrorPlane> mirrors = mirror_planes<D>(lower_, upper_, faces_);
   // Bodies filling a membrane's inside: their regions, and which membrane each fills.
   std::vector<RegionPtr<D>> inside_regions(bodies_.size());
@@ -208,9 +218,9 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                   "': part of its region lies outside the grid; that part holds no points");
   }
 
-  Particles<D> points;
-  for (auto& material : materials_) material->declare_columns(points);
-  points.reserve(total);  // every column once, at its final size
+  // Every body's checks first (they put membrane points a round-off beyond a face back on
+  // it), then which points this process keeps, then the points.
+  std::vector<std::shared_ptr<FrameEstimator<D>>> frames(bodies_.size());
   for (std::size_t index = 0; index < bodies_.size(); ++index) {
     const BodySetup<D>& b = bodies_[index];
     const int i = static_cast<int>(index);
@@ -255,10 +265,8 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     };
     for (const auto& entry : b.point_masses) check_index(entry.first, "point_masses");
     for (const auto& entry : b.point_velocities) check_index(entry.first, "point_velocities");
-    const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
-    check_index(last, "initial_strain.points");
-
-    std::shared_ptr<FrameEstimator<D>> frames;
+    check_index(b.initial_points.second < 0 ? count - 1 : b.initial_points.second,
+                "initial_strain.points");
     if (b.membrane) {
       FrameSetup<D> setup;
       setup.connectivity = b.membrane->connectivity;
@@ -273,54 +281,114 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
           b.orientation.value_or(filled_by[index] >= 0 ? NormalOrientation::away_from_inside
                                                        : NormalOrientation::propagate);
       for (const auto& e : frame_estimators<D>())
-        if (e.name == b.frames) frames = e.make(setup);
-      if (!frames)
+        if (e.name == b.frames) frames[index] = e.make(setup);
+      if (!frames[index])
         problems.push_back({i, "frames", "no frame estimator named \"" + b.frames + "\""});
     }
+  }
+  if (!problems.empty()) throw BuildError(problems);
+
+  std::vector<std::vector<char>> keep;
+  if (select_) {
+    std::vector<PlacedBody<D>> all;
+    for (std::size_t index = 0; index < bodies_.size(); ++index)
+      all.push_back({bodies_[index].name, placed[index]});
+    keep = select_(grid, all);
+    bool fits = keep.size() == bodies_.size();
+    for (std::size_t index = 0; fits && index < keep.size(); ++index)
+      fits = keep[index].size() == placed[index].size();
+    if (!fits) throw std::logic_error("a point selection must flag every placed point");
+    total = 0;
+    for (const auto& flags : keep) total += std::count(flags.begin(), flags.end(), 1);
+  }
+  Particles<D> points;
+  for (auto& material : materials_) material->declare_columns(points);
+  Column<double> built_index;
+  if (select_)
+    built_index = points.template declare<double>({column_names::body_index, "1", true, false});
+  points.reserve(total);  // every column once, at its final size
+  for (std::size_t index = 0; index < bodies_.size(); ++index) {
+    const BodySetup<D>& b = bodies_[index];
+    const Material<D>& material = *materials_[b.material];
+    const auto& positions = placed[index];
+    const long count = static_cast<long>(positions.size());
+    const std::vector<char>* kept = select_ ? &keep[index] : nullptr;
     points.bodies.push_back(
-        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frames});
+        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frames[index]});
     double density = b.density.value_or(material.density());
     if (b.total_mass) {
       double volume = 0.0;
       for (const auto& entry : positions) volume += entry.second;
       density = *b.total_mass / volume;
     }
-    for (const auto& [x, volume] : positions) points.add(x, b.velocity, density * volume, density);
+    // The kept points, and their indices in the body (all of them without a selection).
+    std::vector<long> kept_index;
+    for (long k = 0; k < count; ++k) {
+      if (kept && !(*kept)[k]) continue;
+      const auto& [x, volume] = positions[k];
+      points.add(x, b.velocity, density * volume, density);
+      if (kept) {
+        points[built_index].back() = static_cast<double>(k);
+        kept_index.push_back(k);
+      }
+    }
     auto& body = points.bodies.back();
+    body.built = count;
     body.cut_at = b.cut_at;
+    // The first kept point whose index in the body is k or more, and the kept point of index
+    // k (−1 when another process keeps it).
+    auto from = [&](long k) {
+      if (!kept) return body.begin + std::min(k, count);
+      return body.begin +
+             static_cast<long>(std::lower_bound(kept_index.begin(), kept_index.end(), k) -
+                               kept_index.begin());
+    };
+    auto at = [&](long k) {
+      const long p = from(k);
+      return p < body.end && (!kept || kept_index[p - body.begin] == k) ? p : -1;
+    };
     InitialState<D> state;
     state.internal_energy = b.internal_energy;
     material.initialise(points, body.begin, body.end, state);
     state.strain = b.initial_strain.value_or(Sym<D>::Zero());
     state.stress = b.initial_stress;
+    const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
     if (last < count)
-      material.initialise(points, body.begin + b.initial_points.first, body.begin + last + 1,
-                          state);
-    // Point masses given explicitly (an end mass on a string) keep their point's volume.
-    for (const auto& [point, mass] : b.point_masses) {
-      if (point >= count) continue;
-      const long p = body.begin + point;
-      points.mass[p] = mass;
-      points.density[p] = mass / points.volume[p];
+      material.initialise(points, from(b.initial_points.first), from(last + 1), state);
+    // Point masses given explicitly (an end mass on a string) keep their point's volume; the
+    // last given for a point holds.
+    std::map<long, double> explicit_mass;
+    for (const auto& [point, point_mass] : b.point_masses) {
+      explicit_mass[point] = point_mass;
+      const long p = at(point);
+      if (p < 0) continue;
+      points.mass[p] = point_mass;
+      points.density[p] = point_mass / points.volume[p];
     }
-    double body_mass = 0.0;
+    double body_mass = 0.0;  // the whole body's, in the order it was built
     Vec<D> first_moment = Vec<D>::Zero();
-    for (long p = body.begin; p < body.end; ++p) {
-      body_mass += points.mass[p];
-      first_moment += points.mass[p] * points.position[p];
+    auto given = explicit_mass.begin();
+    for (long k = 0; k < count; ++k) {
+      double m = density * positions[k].second;
+      if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
+      body_mass += m;
+      first_moment += m * positions[k].first;
     }
     body.applied_acceleration = b.external_force / body_mass;
     const Vec<D> center = b.center.value_or(first_moment / body_mass);
-    for (long p = body.begin; p < body.end; ++p) {
+    auto swirl = [&](const Vec<D>& x) -> Vec<D> {  // ω × (x − c) + G (x − c)
       Vec3 r = Vec3::Zero();
-      r.template head<D>() = points.position[p] - center;
-      points.velocity[p] += b.angular_velocity.cross(r).template head<D>() +
-                            b.velocity_gradient * r.template head<D>();
+      r.template head<D>() = x - center;
+      return b.angular_velocity.cross(r).template head<D>() +
+             b.velocity_gradient * r.template head<D>();
+    };
+    for (long p = body.begin; p < body.end; ++p) points.velocity[p] += swirl(points.position[p]);
+    body.start_velocity = b.velocity + swirl(positions.front().first);
+    for (const auto& [point, velocity] : b.point_velocities) {
+      if (point == 0) body.start_velocity = velocity;
+      if (const long p = at(point); p >= 0) points.velocity[p] = velocity;
     }
-    for (const auto& [point, velocity] : b.point_velocities)
-      if (point < count) points.velocity[body.begin + point] = velocity;
   }
-  if (!problems.empty()) throw BuildError(problems);
 
   TransferOptions options = transfer_;
   options.kinematics = settings_.kinematics;

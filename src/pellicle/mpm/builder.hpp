@@ -10,6 +10,7 @@
 //!   b.body(disk);
 //!   auto simulation = b.build();
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -82,6 +83,20 @@ class BuildError : public SetupError {
   std::vector<SetupProblem> problems_;
 };
 
+//! One body's points as the builder places them, before any is kept: each point's position and
+//! the volume it stands for, in the order the body is built.
+template <int D>
+struct PlacedBody {
+  const std::string& name;
+  const std::vector<std::pair<Vec<D>, double>>& points;
+};
+
+//! Which of the placed points this process keeps (a distributed run: those of its patch), a
+//! flag per point of each body. Called once, with the whole grid and every body's points.
+template <int D>
+using PointSelection = std::function<std::vector<std::vector<char>>(
+    const Grid<D>& grid, const std::vector<PlacedBody<D>>& bodies)>;
+
 template <int D>
 class SimulationBuilder {
  public:
@@ -98,6 +113,14 @@ class SimulationBuilder {
   SimulationBuilder& contact(std::unique_ptr<ContactModel<D>> model);
   //! A boundary condition or other hook (mpm/boundary/), applied in the order added.
   SimulationBuilder& hook(std::unique_ptr<StepHook<D>> hook);
+  //! Keep only the points `select` chooses: a distributed run's rank builds its patch's. What
+  //! belongs to a whole body (its mass and centre, a total_mass's density, point indices of
+  //! overrides and initial states) is still the whole body's as built; each kept point
+  //! carries its index in its body (column_names::body_index) and each body its built count
+  //! (BodyInfo::built). The simulation's grid then has no node storage and its state is not
+  //! yet settled: the caller gives it its window (Simulation::use_grid_window) and settles
+  //! it (Simulation::settle_state) before the first step, as dist/distribute does.
+  SimulationBuilder& select_points(PointSelection<D> select);
 
   //! Fill the bodies with points and assemble the simulation (the builder is spent). Throws
   //! BuildError listing every problem (a region without points inside the grid, a membrane
@@ -117,6 +140,7 @@ class SimulationBuilder {
   std::vector<BodySetup<D>> bodies_;
   std::unique_ptr<ContactModel<D>> contact_;
   std::vector<std::unique_ptr<StepHook<D>>> hooks_;
+  PointSelection<D> select_;
 };
 
 //! Volume a point stands for: its sub-cell (per unit depth in 2D; × 2πr in axisymmetry).

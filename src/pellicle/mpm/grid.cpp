@@ -6,15 +6,26 @@
 namespace pellicle {
 
 template <int D>
-Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces)
+Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces,
+              Shape)
     : lower_(lower), upper_(upper), h_(cell), inv_h_(1.0 / cell), faces_(faces) {
-  IVec<D> count;
-  for (int d = 0; d < D; ++d) {
+  for (int d = 0; d < D; ++d)
     cells_[d] = static_cast<int>(std::lround((upper[d] - lower[d]) / cell));
-    count[d] = cells_[d] + 1 + 2 * kGhost;
-  }
   origin_ = lower_ - Vec<D>::Constant(kGhost * h_);
-  allocate(IVec<D>::Zero(), count);
+}
+
+template <int D>
+Grid<D>::Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces)
+    : Grid(lower, upper, cell, faces, Shape{}) {
+  allocate(IVec<D>::Zero(), cells_ + IVec<D>::Constant(1 + 2 * kGhost));
+}
+
+template <int D>
+Grid<D> Grid<D>::without_storage(const Vec<D>& lower, const Vec<D>& upper, double cell,
+                                 const FaceConditions<D>& faces) {
+  Grid<D> g(lower, upper, cell, faces, Shape{});
+  g.set_extent(IVec<D>::Zero(), g.cells_ + IVec<D>::Constant(1 + 2 * kGhost));
+  return g;
 }
 
 template <int D>
@@ -25,7 +36,7 @@ Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last, const IVec<D>
         owned_first[d] < first[d] || owned_last[d] > last[d])
       throw std::invalid_argument(
           "a grid window must lie within the grid, its owned nodes within it");
-  Grid<D> w = *this;
+  Grid<D> w(lower_, upper_, h_, faces_, Shape{});  // not a copy: the storage is the window's
   w.allocate(first, last - first + IVec<D>::Ones());
   w.owned_first_ = owned_first;
   w.owned_last_ = owned_last;
@@ -33,7 +44,7 @@ Grid<D> Grid<D>::window(const IVec<D>& first, const IVec<D>& last, const IVec<D>
 }
 
 template <int D>
-void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
+void Grid<D>::set_extent(const IVec<D>& first, const IVec<D>& count) {
   first_ = owned_first_ = first;
   nodes_ = count;
   owned_last_ = first + count - IVec<D>::Ones();
@@ -42,6 +53,11 @@ void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
     strides_[d] = node_count_;
     node_count_ *= nodes_[d];
   }
+}
+
+template <int D>
+void Grid<D>::allocate(const IVec<D>& first, const IVec<D>& count) {
+  set_extent(first, count);
   mass.assign(node_count_, 0.0);
   momentum.assign(node_count_, Vec<D>::Zero());
   force.assign(node_count_, Vec<D>::Zero());

@@ -46,6 +46,11 @@ class Grid {
   static constexpr int kGhost = 2;
 
   Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces);
+  //! The same grid's shape, faces and node numbering without its node storage: what a rank of
+  //! a distributed run holds until it takes the window it stores (window()). Only geometry
+  //! and node indices may be asked of it.
+  static Grid without_storage(const Vec<D>& lower, const Vec<D>& upper, double cell,
+                              const FaceConditions<D>& faces);
 
   //! The part of this grid a rank of a distributed run stores: nodes `first` to `last`
   //! (inclusive, in grid index space, ghosts included). It keeps the whole grid's origin,
@@ -218,7 +223,13 @@ class Grid {
       if (flips & (1u << d)) r[d] = -r[d];
     return r;
   }
-  //! Storage, face constraints and mirrors of the nodes first_ to first_ + nodes_ − 1.
+  //! The shape alone (without_storage, window): cells, origin and spacing.
+  struct Shape {};
+  Grid(const Vec<D>& lower, const Vec<D>& upper, double cell, const FaceConditions<D>& faces,
+       Shape);
+  //! Node numbering of the nodes first_ to first_ + nodes_ − 1 (all owned).
+  void set_extent(const IVec<D>& first, const IVec<D>& count);
+  //! Their numbering, storage, face constraints and mirrors.
   void allocate(const IVec<D>& first, const IVec<D>& count);
 
   Vec<D> lower_, upper_, origin_;

@@ -29,6 +29,11 @@ struct BodyInfo {
   //! From this time on the body carries no stress (a tether cut, thesis §6.3); its points
   //! keep their mass and move with the grid.
   double cut_at = std::numeric_limits<double>::infinity();
+  //! Points the body was built with, on all ranks together: a distributed run's ranks each
+  //! hold some of them, numbered by column_names::body_index.
+  long built = 0;
+  //! The velocity its first point was built with: a rigid body's, on every rank.
+  Vec<D> start_velocity = Vec<D>::Zero();
   long count() const { return end - begin; }
 };
 
@@ -109,6 +114,7 @@ struct Particles {
     stress.push_back(Sym<D>::Zero());
     body.push_back(static_cast<int>(bodies.size()) - 1);
     bodies.back().end = size();
+    ++bodies.back().built;
     columns.resize(size());
   }
 

@@ -29,7 +29,8 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
       gravity_(gravity) {
   if (points_.bodies.empty()) throw SetupError("a simulation needs at least one body");
   for (const auto& body : points_.bodies) {
-    if (body.count() <= 0) throw SetupError("body '" + body.name + "' has no point");
+    if (body.count() <= 0 && body.built <= 0)
+      throw SetupError("body '" + body.name + "' has no point");
     if (body.material < 0 || body.material >= material_count())
       throw SetupError("body '" + body.name + "' names material " + std::to_string(body.material) +
                        " of " + std::to_string(material_count()));
@@ -47,7 +48,8 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
     const auto& material = *materials_[body.material];
     if (material.is_rigid()) {
       rigid.push_back(static_cast<int>(b));
-      rigid_velocity.push_back(points_.velocity[body.begin]);
+      rigid_velocity.push_back(body.count() >= body.built ? points_.velocity[body.begin]
+                                                          : body.start_velocity);
     }
     if (material.is_membrane() && !(body.frames && normal_.valid()))
       throw SetupError("membrane body '" + body.name + "' needs a frame estimator");
@@ -55,11 +57,20 @@ Simulation<D>::Simulation(SimulationSettings settings, Grid<D> grid, Particles<D
   if (!rigid.empty())
     add_hook(std::make_unique<RigidBodies<D>>(std::move(rigid), std::move(rigid_velocity)));
 
+  points_changed();
+  // Built in part (a distributed run's rank, whose points carry their index in their body):
+  // the ranks settle together once they are connected.
+  if (!points_.columns.template find<double>(column_names::body_index).valid()) settle_state();
+}
+
+template <int D>
+void Simulation<D>::settle_state() {
+  if (settled_) return;
+  settled_ = true;
   // Membrane stresses follow from their strains in their frames, fluid stresses from their
   // density and energy: settle them once before the first step (a zero step changes nothing
   // else).
   update_frames();
-  points_changed();
   for (int b = 0; b < static_cast<int>(points_.bodies.size()); ++b) {
     const auto& body = points_.bodies[b];
     const auto& material = *materials_[body.material];

@@ -110,6 +110,12 @@ class Simulation final : private Stages {
   //! After points were added, removed or reordered (keeping each body contiguous and the
   //! bodies' ranges up to date): rebuild what the step keeps per point range.
   void points_changed();
+  //! Settle the stresses that follow from the points' state before the first step: membranes'
+  //! from their strains in their frames, fluids' from density and energy. The constructor
+  //! does it, except for a distributed run's rank, built with a part of the points (they carry
+  //! column_names::body_index): the ranks do it together once their frames see the whole
+  //! membranes (distribute). Done once; later calls do nothing.
+  void settle_state();
 
   void add_observer(StepObserver<D>* observer) { observers_.push_back(observer); }
   void remove_observer(StepObserver<D>* observer) { std::erase(observers_, observer); }
@@ -224,6 +230,7 @@ class Simulation final : private Stages {
   std::vector<Mat<D>> settled_gradient_;
   std::vector<double> settled_hoop_rate_;
   bool gradients_settled_ = false;
+  bool settled_ = false;  //!< settle_state done
   //! This rank's largest material wave speed, measured by the materials stage for the next
   //! time step; empty when the points changed since (set-up, restore, migration).
   std::optional<double> settled_wave_speed_;

@@ -14,12 +14,15 @@
 
 namespace pellicle::validation {
 
+//! A built-in case with `overrides` (`key=value`), built (keeping the points `select`
+//! chooses, when given: SimulationBuilder::select_points).
 template <int D>
 std::unique_ptr<Simulation<D>> builtin_simulation(const std::string& file,
-                                                  const std::vector<std::string>& overrides) {
+                                                  const std::vector<std::string>& overrides,
+                                                  PointSelection<D> select = {}) {
   const auto source = case_source_from_text(builtin_case(file), file, overrides);
   Case<D> c = read_case<D>(*source);
-  return build_simulation<D>(c);
+  return build_simulation<D>(c, std::move(select));
 }
 
 //! Mass-weighted mean velocity of a body.
