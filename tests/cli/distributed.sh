@@ -74,6 +74,19 @@ same_last_row() {
 same_last_row "$work/c1on1" "$work/c2on1" || fail "a two-rank checkpoint continues elsewhere on one"
 same_last_row "$work/c1on1" "$work/c2on3" || fail "a two-rank checkpoint continues elsewhere on three"
 grep -q "contact_x" "$work/c2on3/history.csv" || fail "the contact run has no contact columns"
+# Each rank wrote its own piece of that checkpoint; a piece missing, or left from another
+# checkpoint, is refused by name.
+for r in 0000 0001; do
+  [ -s "$work/c2/checkpoint_r$r.h5" ] || fail "checkpoint piece r$r missing"
+done
+[ ! -e "$work/c2/checkpoint_r0002.h5" ] || fail "a third checkpoint piece from two ranks"
+mv "$work/c2/checkpoint_r0001.h5" "$work/c2/kept.h5"
+expect 2 "checkpoint_r0001.h5" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
+  --out "$work/nopiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"
+cp "$work/first/checkpoint.h5" "$work/c2/checkpoint_r0001.h5"
+expect 2 "not a piece of this checkpoint" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
+  --out "$work/badpiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"
+mv "$work/c2/kept.h5" "$work/c2/checkpoint_r0001.h5"
 
 # Probes of points that migrate between the ranks (the pendulum's end mass and angle): the
 # last row as one process writes it, to round-off.

@@ -8,12 +8,12 @@
 #include <stdexcept>
 
 #include "pellicle/core/error.hpp"
-#include "pellicle/mpm/body_as_built.hpp"
 
 namespace pellicle {
 namespace {
 
 constexpr const char* kFormat = "pellicle-checkpoint";
+constexpr const char* kPieceFormat = "pellicle-checkpoint-piece";
 
 //! An HDF5 identifier closed when it goes out of scope.
 class Handle {
@@ -149,114 +149,41 @@ void for_each_point_array(Particles& p, long begin, Visit&& visit) {
     }
 }
 
-//! One body's point array in the order the points were built.
-struct WholeArray {
-  std::string name;
-  int components;
-  std::vector<double> values;
-};
-
-//! A body's point arrays in a distributed run, gathered on rank 0 in the order the points were
-//! built (empty elsewhere). Collective.
+//! This process's point of index `index` in the body as built, or −1 when another holds it. A
+//! process built in part (column_names::body_index set) keeps its points of a body in the order
+//! they were built.
 template <int D>
-std::vector<WholeArray> gather_body(const Particles<D>& p, const BodyInfo<D>& body,
-                                    const Collective& ranks) {
-  std::vector<WholeArray> arrays;
-  std::vector<const double*> sources;  // each array's values of the body's first point
-  int width = 0;
-  for_each_point_array<D>(p, body.begin, [&](const std::string& name, const double* data, int k) {
-    arrays.push_back({name, k, {}});
-    sources.push_back(data);
-    width += k;
-  });
-  auto append = [&](long point, std::vector<double>& out) {
-    const long i = point - body.begin;
-    for (std::size_t a = 0; a < arrays.size(); ++a) {
-      const int k = arrays[a].components;
-      out.insert(out.end(), sources[a] + i * k, sources[a] + (i + 1) * k);
-    }
-  };
-  const std::vector<double> rows =
-      body_as_built(p, body.begin, body.end, width, append, &ranks, false);
-  const long count = static_cast<long>(rows.size()) / width;
-  for (auto& a : arrays) a.values.resize(count * a.components);
-  const double* v = rows.data();
-  for (long i = 0; i < count; ++i)
-    for (auto& a : arrays) {
-      std::copy_n(v, a.components, a.values.data() + i * a.components);
-      v += a.components;
-    }
-  return arrays;
+long point_of(const Particles<D>& p, const Column<double>& built, const BodyInfo<D>& body,
+              long index) {
+  if (!built.valid()) return index < body.count() ? body.begin + index : -1;
+  const auto& numbers = p[built];
+  const auto first = numbers.begin() + body.begin, last = numbers.begin() + body.end;
+  const auto at = std::lower_bound(first, last, static_cast<double>(index));
+  return at != last && *at == static_cast<double>(index) ? static_cast<long>(at - numbers.begin())
+                                                         : -1;
 }
 
-}  // namespace
+//! The file of rank `rank`'s points of a distributed run's checkpoint `path` (the index):
+//! checkpoint.h5 → checkpoint_r0003.h5.
+std::string piece_path(const std::string& path, int rank) {
+  const std::filesystem::path index(path);
+  char suffix[16];
+  std::snprintf(suffix, sizeof suffix, "_r%04d", rank);
+  return (index.parent_path() / (index.stem().string() + suffix + index.extension().string()))
+      .string();
+}
 
-template <int D>
-void write_checkpoint(const std::string& path, const Simulation<D>& s,
-                      const CheckpointHeader& header, const NodeCarrier* to_whole_grid) {
-  // A distributed run: rank 0 writes what one process would (points in the order they were
-  // built, node states of the whole grid), so that any number of ranks can continue.
-  const Collective* ranks = s.collective();
-  const auto& p = s.points();
-  std::vector<std::vector<WholeArray>> whole_bodies;
-  std::vector<HookState> hook_states;
-  for (const auto& hook : s.hooks()) hook_states.push_back(hook->save_state());
-  const double max_speed = ranks ? ranks->max(s.max_point_speed()) : s.max_point_speed();
-  if (ranks) {
-    if (!to_whole_grid)
-      throw std::logic_error("a distributed run's checkpoint needs the carrier to the whole grid");
-    for (const auto& body : p.bodies) whole_bodies.push_back(gather_body(p, body, *ranks));
-    for (auto& state : hook_states)
-      for (auto& array : state)
-        if (array.per_node) to_whole_grid->carry(array.values);
-    if (ranks->rank() != 0) return;
-  }
+//! Write an HDF5 file through `fill(file)` under a temporary name, then rename it into place;
+//! a failure removes the temporary and throws std::runtime_error naming `path`.
+template <class Fill>
+void write_atomically(const std::string& path, Fill&& fill) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions with the path
   const std::string temporary = path + ".partial";
   try {
     {
       Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
                   "cannot create");
-      write_text(file, "format", kFormat);
-      write_text(file, "version", PELLICLE_VERSION);
-      write_number<long>(file, "dimension", D);
-      write_text(file, "case_file", header.case_file);
-      write_text(file, "case_hash", header.case_hash);
-      write_text(file, "case_text", header.case_text);
-      write_text(file, "case_toml", header.case_toml);
-      write_number<double>(file, "time", s.time());
-      write_number<long>(file, "step", s.step_count());
-      write_number<double>(file, "last_dt", s.last_dt());
-      write_number<double>(file, "max_speed", max_speed);
-      write_text(file, "rng",
-                 "isosurface frames: one generator per cell, seeded from " +
-                     std::to_string(FrameSetup<D>{}.seed));
-      Handle bodies = group(file, "bodies", true);
-      for (std::size_t b = 0; b < p.bodies.size(); ++b) {
-        const auto& body = p.bodies[b];
-        Handle g = group(bodies, "body_" + std::to_string(b), true);
-        write_text(g, "name", body.name);
-        write_number<long>(g, "material", body.material);
-        Handle columns = group(g, "columns", true);
-        if (ranks)
-          for (const auto& a : whole_bodies[b])
-            write_array(g, a.name, a.values.data(),
-                        static_cast<long>(a.values.size()) / a.components, a.components);
-        else
-          for_each_point_array<D>(p, body.begin,
-                                  [&](const std::string& name, const double* data, int k) {
-                                    write_array(g, name, data, body.count(), k);
-                                  });
-      }
-      Handle hooks = group(file, "hooks", true);
-      for (std::size_t h = 0; h < s.hooks().size(); ++h) {
-        const std::string name = s.hooks()[h]->state_name();
-        if (name.empty()) continue;
-        Handle g = group(hooks, name, true);
-        for (const auto& array : hook_states[h])
-          write_array(g, array.name, array.values.data(), static_cast<long>(array.values.size()),
-                      1);
-      }
+      fill(file);
       check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
     }
     std::error_code ec;
@@ -266,6 +193,128 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
     std::remove(temporary.c_str());
     throw std::runtime_error("cannot write checkpoint " + path + ": " + e.what());
   }
+}
+
+//! The group of the body named `name` among `bodies`' members, or "" when none is.
+std::string body_group(hid_t bodies, const std::string& name) {
+  for (const auto& g : members(bodies))
+    if (read_text(group(bodies, g, false), "name") == name) return g;
+  return "";
+}
+
+//! The saved parts of the body whose group is `name`: in a checkpoint of one file its group,
+//! whose rows are the body's points in the order they were built (visit(group, {})); in a
+//! distributed run's, the group in each rank's piece with the index in the body of each of its
+//! rows (visit(group, indices)).
+template <class Visit>
+void for_each_part(hid_t index, const std::string& path, const std::string& name, Visit&& visit) {
+  if (H5Aexists(index, "pieces") <= 0) {
+    Handle bodies = group(index, "bodies", false);
+    visit(group(bodies, name, false), std::vector<double>{});
+    return;
+  }
+  const long pieces = read_number<long>(index, "pieces"), step = read_number<long>(index, "step");
+  for (int rank = 0; rank < pieces; ++rank) {
+    const std::string piece = piece_path(path, rank);
+    Handle file(H5Fopen(piece.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+                "cannot open its piece " + piece);
+    if (H5Aexists(file, "format") <= 0 || read_text(file, "format") != kPieceFormat ||
+        read_number<long>(file, "step") != step)
+      throw std::runtime_error(piece + " is not a piece of this checkpoint (step " +
+                               std::to_string(step) + ")");
+    Handle bodies = group(file, "bodies", false);
+    Handle g = group(bodies, name, false);
+    visit(g, read_vector(g, "body_index"));
+  }
+}
+
+}  // namespace
+
+template <int D>
+void write_checkpoint(const std::string& path, const Simulation<D>& s,
+                      const CheckpointHeader& header, const NodeCarrier* to_whole_grid) {
+  // A distributed run: each rank writes its points to a piece of its own, then rank 0 the
+  // index (header, node states of the whole grid, the bodies' point counts), so that any
+  // number of ranks can continue.
+  const Collective* ranks = s.collective();
+  const auto& p = s.points();
+  std::vector<HookState> hook_states;
+  for (const auto& hook : s.hooks()) hook_states.push_back(hook->save_state());
+  const double max_speed = ranks ? ranks->max(s.max_point_speed()) : s.max_point_speed();
+  if (ranks) {
+    if (!to_whole_grid)
+      throw std::logic_error("a distributed run's checkpoint needs the carrier to the whole grid");
+    for (auto& state : hook_states)
+      for (auto& array : state)
+        if (array.per_node) to_whole_grid->carry(array.values);
+    const Column<double> built = p.columns.template find<double>(column_names::body_index);
+    std::string failure;
+    try {
+      write_atomically(piece_path(path, ranks->rank()), [&](hid_t file) {
+        write_text(file, "format", kPieceFormat);
+        write_number<long>(file, "step", s.step_count());
+        write_number<long>(file, "rank", ranks->rank());
+        Handle bodies = group(file, "bodies", true);
+        for (std::size_t b = 0; b < p.bodies.size(); ++b) {
+          const auto& body = p.bodies[b];
+          Handle g = group(bodies, "body_" + std::to_string(b), true);
+          write_text(g, "name", body.name);
+          Handle columns = group(g, "columns", true);
+          write_array(g, "body_index", p[built].data() + body.begin, body.count(), 1);
+          for_each_point_array<D>(p, body.begin,
+                                  [&](const std::string& name, const double* data, int k) {
+                                    write_array(g, name, data, body.count(), k);
+                                  });
+        }
+      });
+    } catch (const std::runtime_error& e) {
+      failure = e.what();
+    }
+    if (ranks->max(failure.empty() ? 0.0 : 1.0) > 0.0)
+      throw std::runtime_error(failure.empty() ? "cannot write checkpoint " + path +
+                                                     ": another rank could not write its piece"
+                                               : failure);
+    if (ranks->rank() != 0) return;
+  }
+  write_atomically(path, [&](hid_t file) {
+    write_text(file, "format", kFormat);
+    write_text(file, "version", PELLICLE_VERSION);
+    write_number<long>(file, "dimension", D);
+    write_text(file, "case_file", header.case_file);
+    write_text(file, "case_hash", header.case_hash);
+    write_text(file, "case_text", header.case_text);
+    write_text(file, "case_toml", header.case_toml);
+    write_number<double>(file, "time", s.time());
+    write_number<long>(file, "step", s.step_count());
+    write_number<double>(file, "last_dt", s.last_dt());
+    write_number<double>(file, "max_speed", max_speed);
+    write_text(file, "rng",
+               "isosurface frames: one generator per cell, seeded from " +
+                   std::to_string(FrameSetup<D>{}.seed));
+    if (ranks) write_number<long>(file, "pieces", ranks->size());
+    Handle bodies = group(file, "bodies", true);
+    for (std::size_t b = 0; b < p.bodies.size(); ++b) {
+      const auto& body = p.bodies[b];
+      Handle g = group(bodies, "body_" + std::to_string(b), true);
+      write_text(g, "name", body.name);
+      write_number<long>(g, "material", body.material);
+      write_number<long>(g, "points", body.built);
+      Handle columns = group(g, "columns", true);
+      if (!ranks)
+        for_each_point_array<D>(p, body.begin,
+                                [&](const std::string& name, const double* data, int k) {
+                                  write_array(g, name, data, body.count(), k);
+                                });
+    }
+    Handle hooks = group(file, "hooks", true);
+    for (std::size_t h = 0; h < s.hooks().size(); ++h) {
+      const std::string name = s.hooks()[h]->state_name();
+      if (name.empty()) continue;
+      Handle g = group(hooks, name, true);
+      for (const auto& array : hook_states[h])
+        write_array(g, array.name, array.values.data(), static_cast<long>(array.values.size()), 1);
+    }
+  });
 }
 
 CheckpointHeader read_checkpoint_header(const std::string& path) {
@@ -305,28 +354,36 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
     // Built in part (a distributed run's rank): each point's row is its index in its body.
     const Column<double> built = p.columns.template find<double>(column_names::body_index);
     Handle bodies = group(file, "bodies", false);
-    const auto saved = members(bodies);
     for (const auto& body : p.bodies) {
-      std::string found;
-      for (const auto& g : saved)
-        if (read_text(group(bodies, g, false), "name") == body.name) found = g;
+      const std::string found = body_group(bodies, body.name);
       if (found.empty()) {
         added.push_back(body.name);
         continue;
       }
-      Handle g = group(bodies, found, false);
-      std::vector<double> whole;  // a body built in part: its whole array, then this part's rows
-      for_each_point_array<D>(p, body.begin, [&](const std::string& name, double* data, int k) {
-        if (built.valid()) whole.resize(body.built * k);
-        if (!read_array(g, name, built.valid() ? whole.data() : data, body.built, k))
-          throw InputError(where, "--restart",
-                           "body '" + body.name + "': the checkpoint has no '" + name +
-                               "' (the run now needs it: a model or velocity update changed)");
-        if (built.valid())
-          for (long i = body.begin; i < body.end; ++i)
-            std::copy_n(whole.data() + static_cast<long>(p[built][i]) * k, k,
-                        data + (i - body.begin) * k);
+      long rows_saved = 0;
+      for_each_part(file, path, found, [&](hid_t g, const std::vector<double>& index) {
+        const long rows = index.empty() ? body.built : static_cast<long>(index.size());
+        rows_saved += rows;
+        std::vector<long> target(rows);  // this process's point of each row, or −1
+        for (long r = 0; r < rows; ++r)
+          target[r] = point_of(p, built, body, index.empty() ? r : static_cast<long>(index[r]));
+        std::vector<double> values;
+        for_each_point_array<D>(p, body.begin, [&](const std::string& name, double* data, int k) {
+          values.resize(rows * k);
+          if (!read_array(g, name, values.data(), rows, k))
+            throw InputError(where, "--restart",
+                             "body '" + body.name + "': the checkpoint has no '" + name +
+                                 "' (the run now needs it: a model or velocity update changed)");
+          for (long r = 0; r < rows; ++r)
+            if (target[r] >= 0)
+              std::copy_n(values.data() + r * k, k, data + (target[r] - body.begin) * k);
+        });
       });
+      if (rows_saved != body.built)
+        throw InputError(where, "--restart",
+                         "body '" + body.name + "': the checkpoint holds " +
+                             std::to_string(rows_saved) + " points, the case builds " +
+                             std::to_string(body.built));
     }
     for (auto& hook : s.hooks()) {
       const std::string name = hook->state_name();
@@ -357,19 +414,22 @@ std::optional<std::vector<Vec<D>>> checkpoint_positions(const std::string& path,
   try {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
     Handle bodies = group(file, "bodies", false);
-    for (const auto& g : members(bodies)) {
-      Handle saved = group(bodies, g, false);
-      if (read_text(saved, "name") != body) continue;
-      const std::vector<double> values = read_vector(saved, "position");
-      std::vector<Vec<D>> positions(values.size() / D);
-      for (std::size_t i = 0; i < positions.size(); ++i)
-        positions[i] = Vec<D>(values.data() + D * i);
-      return positions;
-    }
+    const std::string found = body_group(bodies, body);
+    if (found.empty()) return std::nullopt;
+    std::vector<Vec<D>> positions;
+    for_each_part(file, path, found, [&](hid_t g, const std::vector<double>& index) {
+      const std::vector<double> values = read_vector(g, "position");
+      const long rows = static_cast<long>(values.size()) / D;
+      for (long r = 0; r < rows; ++r) {
+        const long i = index.empty() ? r : static_cast<long>(index[r]);
+        if (i >= static_cast<long>(positions.size())) positions.resize(i + 1);
+        positions[i] = Vec<D>(values.data() + D * r);
+      }
+    });
+    return positions;
   } catch (const std::runtime_error& e) {
     throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
   }
-  return std::nullopt;
 }
 
 template void write_checkpoint<2>(const std::string&, const Simulation<2>&, const CheckpointHeader&,

@@ -8,7 +8,11 @@
 //!                     volume, density, stress, and columns/<name> for every declared
 //!                     column marked for checkpoints (one row per point)
 //!   /hooks/<name>     the arrays of hooks that carry state (contact-release's node states)
-//! A distributed run's checkpoint is the same file, its points gathered from the ranks.
+//! A distributed run's checkpoint is this file without the bodies' point datasets (each body
+//! group has attribute `points`, its point count as built, and the file attribute `pieces`
+//! the number of ranks), beside one piece per rank, checkpoint_rNNNN.h5 (attributes format,
+//! step, rank): /bodies/body_N with the rank's points of the body, their datasets as above
+//! and `body_index`, each point's index in its body as built.
 //! The frame estimators draw their random points from a generator seeded per cell, so the
 //! run has no random state beyond the seed recorded in `rng`.
 
@@ -33,10 +37,9 @@ struct CheckpointHeader {
 };
 
 //! Write the state of `simulation` to `path` (atomically). Throws std::runtime_error naming
-//! the path when it cannot be written. A distributed run's ranks all call it, and rank 0
-//! writes the file one process would: points in the order they were built, and the hooks'
-//! node states brought to the whole grid by `to_whole_grid`. Any number of ranks, one
-//! included, can continue from it.
+//! the path when it cannot be written. A distributed run's ranks all call it: each writes its
+//! piece, then rank 0 the file at `path`, with the hooks' node states brought to the whole
+//! grid by `to_whole_grid`. Any number of ranks, one included, can continue from it.
 template <int D>
 void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
                       const CheckpointHeader& header, const NodeCarrier* to_whole_grid = nullptr);

@@ -16,12 +16,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-//! Files a run (or the plotting tools run on its results) writes.
+//! Files a run (or the plotting tools run on its results) writes; checkpoint_rNNNN.h5 are the
+//! ranks' pieces of a distributed run's checkpoint.
 bool written_by_pellicle(const fs::path& file) {
   static const std::set<std::string> names = {"history.csv", "summary.json", "status",
                                               "checkpoint.h5"};
-  static const std::set<std::string> extensions = {".vtu", ".vti", ".vtp", ".pvd", ".png", ".part"};
-  return names.count(file.filename().string()) || extensions.count(file.extension().string());
+  static const std::set<std::string> extensions = {".vtu",  ".vti", ".vtp", ".pvtu",
+                                                   ".pvti", ".pvd", ".png", ".part"};
+  const std::string name = file.filename().string();
+  const bool piece = name.starts_with("checkpoint_r") && file.extension() == ".h5";
+  return piece || names.count(name) || extensions.count(file.extension().string());
 }
 
 //! The file system is full or failing, whatever the path (ENOSPC, EDQUOT, EIO).

@@ -156,6 +156,93 @@ std::vector<MirrorPlane> mirror_planes(const Vec<D>& lower, const Vec<D>& upper,
   return planes;
 }
 
+//! Add body `b`'s points as placed (`positions`) to `points`: those `kept` flags, each numbered
+//! by its index in the body in `built_index`, or all of them when `kept` is null. What belongs
+//! to the whole body (its mass and centre, a total_mass's density, the velocity of its first
+//! point, point indices) comes from all its placed points.
+template <int D>
+void add_body(const BodySetup<D>& b, const Material<D>& material,
+              const std::vector<std::pair<Vec<D>, double>>& positions,
+              const std::vector<char>* kept, std::shared_ptr<FrameEstimator<D>> frames,
+              Column<double> built_index, Particles<D>& points) {
+  const long count = static_cast<long>(positions.size());
+  points.bodies.push_back(
+      {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), std::move(frames)});
+  double density = b.density.value_or(material.density());
+  if (b.total_mass) {
+    double volume = 0.0;
+    for (const auto& entry : positions) volume += entry.second;
+    density = *b.total_mass / volume;
+  }
+  // The kept points, and their indices in the body (all of them without a selection).
+  std::vector<long> kept_index;
+  for (long k = 0; k < count; ++k) {
+    if (kept && !(*kept)[k]) continue;
+    const auto& [x, volume] = positions[k];
+    points.add(x, b.velocity, density * volume, density);
+    if (kept) {
+      points[built_index].back() = static_cast<double>(k);
+      kept_index.push_back(k);
+    }
+  }
+  auto& body = points.bodies.back();
+  body.built = count;
+  body.cut_at = b.cut_at;
+  // The first kept point whose index in the body is k or more, and the kept point of index
+  // k (−1 when another process keeps it).
+  auto from = [&](long k) {
+    if (!kept) return body.begin + std::min(k, count);
+    return body.begin +
+           static_cast<long>(std::lower_bound(kept_index.begin(), kept_index.end(), k) -
+                             kept_index.begin());
+  };
+  auto at = [&](long k) {
+    const long p = from(k);
+    return p < body.end && (!kept || kept_index[p - body.begin] == k) ? p : -1;
+  };
+  InitialState<D> state;
+  state.internal_energy = b.internal_energy;
+  material.initialise(points, body.begin, body.end, state);
+  state.strain = b.initial_strain.value_or(Sym<D>::Zero());
+  state.stress = b.initial_stress;
+  const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
+  if (last < count)
+    material.initialise(points, from(b.initial_points.first), from(last + 1), state);
+  // Point masses given explicitly (an end mass on a string) keep their point's volume; the
+  // last given for a point holds.
+  std::map<long, double> explicit_mass;
+  for (const auto& [point, point_mass] : b.point_masses) {
+    explicit_mass[point] = point_mass;
+    const long p = at(point);
+    if (p < 0) continue;
+    points.mass[p] = point_mass;
+    points.density[p] = point_mass / points.volume[p];
+  }
+  double body_mass = 0.0;  // the whole body's, in the order it was built
+  Vec<D> first_moment = Vec<D>::Zero();
+  auto given = explicit_mass.begin();
+  for (long k = 0; k < count; ++k) {
+    double m = density * positions[k].second;
+    if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
+    body_mass += m;
+    first_moment += m * positions[k].first;
+  }
+  body.applied_acceleration = b.external_force / body_mass;
+  const Vec<D> center = b.center.value_or(first_moment / body_mass);
+  auto swirl = [&](const Vec<D>& x) -> Vec<D> {  // ω × (x − c) + G (x − c)
+    Vec3 r = Vec3::Zero();
+    r.template head<D>() = x - center;
+    return b.angular_velocity.cross(r).template head<D>() +
+           b.velocity_gradient * r.template head<D>();
+  };
+  for (long p = body.begin; p < body.end; ++p) points.velocity[p] += swirl(points.position[p]);
+  body.start_velocity = b.velocity + swirl(positions.front().first);
+  for (const auto& [point, velocity] : b.point_velocities) {
+    if (point == 0) body.start_velocity = velocity;
+    if (const long p = at(point); p >= 0) points.velocity[p] = velocity;
+  }
+}
+
 }  // namespace
 
 template <int D>
@@ -307,88 +394,9 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
   if (select_)
     built_index = points.template declare<double>({column_names::body_index, "1", true, false});
   points.reserve(total);  // every column once, at its final size
-  for (std::size_t index = 0; index < bodies_.size(); ++index) {
-    const BodySetup<D>& b = bodies_[index];
-    const Material<D>& material = *materials_[b.material];
-    const auto& positions = placed[index];
-    const long count = static_cast<long>(positions.size());
-    const std::vector<char>* kept = select_ ? &keep[index] : nullptr;
-    points.bodies.push_back(
-        {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), frames[index]});
-    double density = b.density.value_or(material.density());
-    if (b.total_mass) {
-      double volume = 0.0;
-      for (const auto& entry : positions) volume += entry.second;
-      density = *b.total_mass / volume;
-    }
-    // The kept points, and their indices in the body (all of them without a selection).
-    std::vector<long> kept_index;
-    for (long k = 0; k < count; ++k) {
-      if (kept && !(*kept)[k]) continue;
-      const auto& [x, volume] = positions[k];
-      points.add(x, b.velocity, density * volume, density);
-      if (kept) {
-        points[built_index].back() = static_cast<double>(k);
-        kept_index.push_back(k);
-      }
-    }
-    auto& body = points.bodies.back();
-    body.built = count;
-    body.cut_at = b.cut_at;
-    // The first kept point whose index in the body is k or more, and the kept point of index
-    // k (−1 when another process keeps it).
-    auto from = [&](long k) {
-      if (!kept) return body.begin + std::min(k, count);
-      return body.begin +
-             static_cast<long>(std::lower_bound(kept_index.begin(), kept_index.end(), k) -
-                               kept_index.begin());
-    };
-    auto at = [&](long k) {
-      const long p = from(k);
-      return p < body.end && (!kept || kept_index[p - body.begin] == k) ? p : -1;
-    };
-    InitialState<D> state;
-    state.internal_energy = b.internal_energy;
-    material.initialise(points, body.begin, body.end, state);
-    state.strain = b.initial_strain.value_or(Sym<D>::Zero());
-    state.stress = b.initial_stress;
-    const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
-    if (last < count)
-      material.initialise(points, from(b.initial_points.first), from(last + 1), state);
-    // Point masses given explicitly (an end mass on a string) keep their point's volume; the
-    // last given for a point holds.
-    std::map<long, double> explicit_mass;
-    for (const auto& [point, point_mass] : b.point_masses) {
-      explicit_mass[point] = point_mass;
-      const long p = at(point);
-      if (p < 0) continue;
-      points.mass[p] = point_mass;
-      points.density[p] = point_mass / points.volume[p];
-    }
-    double body_mass = 0.0;  // the whole body's, in the order it was built
-    Vec<D> first_moment = Vec<D>::Zero();
-    auto given = explicit_mass.begin();
-    for (long k = 0; k < count; ++k) {
-      double m = density * positions[k].second;
-      if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
-      body_mass += m;
-      first_moment += m * positions[k].first;
-    }
-    body.applied_acceleration = b.external_force / body_mass;
-    const Vec<D> center = b.center.value_or(first_moment / body_mass);
-    auto swirl = [&](const Vec<D>& x) -> Vec<D> {  // ω × (x − c) + G (x − c)
-      Vec3 r = Vec3::Zero();
-      r.template head<D>() = x - center;
-      return b.angular_velocity.cross(r).template head<D>() +
-             b.velocity_gradient * r.template head<D>();
-    };
-    for (long p = body.begin; p < body.end; ++p) points.velocity[p] += swirl(points.position[p]);
-    body.start_velocity = b.velocity + swirl(positions.front().first);
-    for (const auto& [point, velocity] : b.point_velocities) {
-      if (point == 0) body.start_velocity = velocity;
-      if (const long p = at(point); p >= 0) points.velocity[p] = velocity;
-    }
-  }
+  for (std::size_t index = 0; index < bodies_.size(); ++index)
+    add_body<D>(bodies_[index], *materials_[bodies_[index].material], placed[index],
+                select_ ? &keep[index] : nullptr, frames[index], built_index, points);
 
   TransferOptions options = transfer_;
   options.kinematics = settings_.kinematics;
