@@ -64,8 +64,7 @@ PointSelection<2> every_third(int rest) {
   return [rest](const Grid<2>&, const std::vector<PlacedBody<2>>& bodies) {
     std::vector<std::vector<char>> keep(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b)
-      for (std::size_t k = 0; k < bodies[b].points.size(); ++k)
-        keep[b].push_back(static_cast<int>(k % 3) == rest);
+      for (long k = 0; k < bodies[b].count; ++k) keep[b].push_back(static_cast<int>(k % 3) == rest);
     return keep;
   };
 }
@@ -105,7 +104,7 @@ TEST(PartialBuild, KeptPointsAreBuiltAsInTheWholeBuild) {
 TEST(PartialBuild, NoPointKeptLeavesTheBodyEmptyButKnown) {
   const auto part = build([](const Grid<2>&, const std::vector<PlacedBody<2>>& bodies) {
     std::vector<std::vector<char>> keep(bodies.size());
-    for (std::size_t b = 0; b < bodies.size(); ++b) keep[b].assign(bodies[b].points.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b) keep[b].assign(bodies[b].count, 0);
     return keep;
   });
   EXPECT_EQ(part->point_count(), 0);

@@ -204,9 +204,10 @@ void PatchRun<D>::rebalance(Simulation<D>& simulation) {
   world_.sum(counts.points);
   std::vector<Patch<D>> patches = split(counts, world_.size());
   if (imbalance(patches) > now - 0.5 * limit) return;
-  const Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
+  Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
   use_patches(std::move(patches), window);
-  simulation.use_grid_window(window, WindowCarrier<D>(grid, window, &world_));
+  const WindowCarrier<D> carrier(grid, window, &world_);
+  simulation.use_grid_window(std::move(window), carrier);
   migrate(simulation);
   simulation.points_changed();
   ++rebalances_;
@@ -233,26 +234,31 @@ PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> save
                                std::vector<Patch<D>>& patches) {
   return [&world, saved = std::move(saved), &patches](const Grid<D>& grid,
                                                       const std::vector<PlacedBody<D>>& bodies) {
-    // Each body's points where a checkpoint put them, else where they are built.
+    // Each body's points where a checkpoint put them, else where they are built:
+    // visit(index in the body, position) for each in turn.
     std::vector<std::vector<Vec<D>>> moved(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       auto at = saved ? saved(bodies[b].name) : std::nullopt;
-      if (at && at->size() == bodies[b].points.size()) moved[b] = std::move(*at);
+      if (at && static_cast<long>(at->size()) == bodies[b].count) moved[b] = std::move(*at);
     }
-    auto position = [&](std::size_t b, std::size_t k) -> const Vec<D>& {
-      return moved[b].empty() ? bodies[b].points[k].first : moved[b][k];
+    auto walk = [&](std::size_t b, auto&& visit) {
+      long k = 0;
+      if (!moved[b].empty())
+        for (const auto& x : moved[b]) visit(k++, x);
+      else
+        bodies[b].walk([&](const Vec<D>& x) { visit(k++, x); });
     };
     CellCounts<D> counts = no_points(grid);
     for (std::size_t b = 0; b < bodies.size(); ++b)
-      for (std::size_t k = 0; k < bodies[b].points.size(); ++k)
-        count_point(grid, position(b, k), counts);
+      walk(b, [&](long, const Vec<D>& x) { count_point(grid, x, counts); });
     patches = split(counts, world.size());
     const std::vector<PatchBox<D>> boxes = patch_boxes(patches, grid);
     std::vector<std::vector<char>> keep(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      keep[b].resize(bodies[b].points.size());
-      for (std::size_t k = 0; k < keep[b].size(); ++k)
-        keep[b][k] = owner_of(boxes, position(b, k), world.rank()) == world.rank();
+      keep[b].resize(bodies[b].count);
+      walk(b, [&](long k, const Vec<D>& x) {
+        keep[b][k] = owner_of(boxes, x, world.rank()) == world.rank();
+      });
     }
     return keep;
   };
@@ -267,11 +273,12 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
   if (reach > Grid<D>::kGhost)
     throw SetupError("the kernel reaches " + std::to_string(reach) +
                      " node layers beyond a cell, more than the grid's ghost layers");
-  const Grid<D> window = window_of(grid, patches[world.rank()], reach);
+  Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
   gather_membrane_frames(world, points,
                          points.columns.template find<double>(column_names::body_index));
-  simulation.use_grid_window(window, WindowCarrier<D>(grid, window, nullptr));
+  const WindowCarrier<D> carrier(grid, window, nullptr);
+  simulation.use_grid_window(std::move(window), carrier);
   simulation.points_changed();
   simulation.set_collective(&world);
   const PatchRun<D>& run = *hook;

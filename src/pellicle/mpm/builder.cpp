@@ -87,29 +87,73 @@ SimulationBuilder<D>& SimulationBuilder<D>::select_points(PointSelection<D> sele
 
 namespace {
 
-//! Where a body's points are and what each stands for: filled sub-cells of a region, or the
-//! samples of a membrane (volume = length or area × thickness, IJNME §3: m = ρ Δs t).
+//! Where a body's points are and what each stands for: the samples of a membrane (volume =
+//! length or area × thickness, IJNME §3: m = ρ Δs t) or the filled sub-cells of a region, in
+//! the order the body is built. A membrane's are held; a region's fill is held when `hold` (a
+//! whole build), else walked anew each time (a distributed run's rank, which then holds no
+//! point of the whole body).
 template <int D>
-std::vector<std::pair<Vec<D>, double>> body_points(const BodySetup<D>& b, const Region<D>* region,
-                                                   const Vec<D>& lower, const Vec<D>& upper,
-                                                   double cell, Kinematics kinematics) {
-  std::vector<std::pair<Vec<D>, double>> out;
-  const bool axisymmetric = kinematics == Kinematics::axisymmetric;
-  if (b.membrane) {
-    for (std::size_t i = 0; i < b.membrane->points.size(); ++i) {
-      Vec<D> x = b.membrane->points[i];
-      const double ds = b.membrane->measure[i], v = ds * b.thickness;
-      // On the axis the hoop terms v_r / r and σθθ / r are singular and the ring a point
-      // stands for has no area: a point closer to it than a quarter spacing sits there.
-      if (axisymmetric) x[0] = std::max(x[0], 0.25 * ds);
-      out.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
+class Placement {
+ public:
+  Placement(const BodySetup<D>& b, const Region<D>* region, const Vec<D>& lower,
+            const Vec<D>& upper, double cell, Kinematics kinematics, bool hold)
+      : ppc_(b.points_per_cell),
+        region_(b.membrane ? nullptr : region),
+        lower_(lower),
+        upper_(upper),
+        cell_(cell),
+        kinematics_(kinematics) {
+    const bool axisymmetric = kinematics == Kinematics::axisymmetric;
+    if (b.membrane) {
+      for (std::size_t i = 0; i < b.membrane->points.size(); ++i) {
+        Vec<D> x = b.membrane->points[i];
+        const double ds = b.membrane->measure[i], v = ds * b.thickness;
+        // On the axis the hoop terms v_r / r and σθθ / r are singular and the ring a point
+        // stands for has no area: a point closer to it than a quarter spacing sits there.
+        if (axisymmetric) x[0] = std::max(x[0], 0.25 * ds);
+        held_.emplace_back(x, axisymmetric ? 2.0 * std::numbers::pi * x[0] * v : v);
+      }
+    } else if (region_ && hold) {
+      for_each_fill_point<D>(*region_, lower, upper, cell, ppc_, [&](const Vec<D>& x) {
+        held_.emplace_back(x, point_volume<D>(cell, ppc_, kinematics, x));
+      });
     }
-  } else if (region) {
-    for (const auto& x : fill_region<D>(*region, lower, upper, cell, b.points_per_cell))
-      out.emplace_back(x, point_volume<D>(cell, b.points_per_cell, kinematics, x));
+    holding_ = b.membrane || hold;
+    for_each([&](const Vec<D>& x, double volume) {
+      if (count_++ == 0) first_ = x;
+      volume_ += volume;
+    });
   }
-  return out;
-}
+  //! visit(x, volume) for each point in turn.
+  template <class Visit>
+  void for_each(Visit&& visit) const {
+    if (holding_) {
+      for (const auto& [x, volume] : held_) visit(x, volume);
+    } else if (region_) {
+      for_each_fill_point<D>(*region_, lower_, upper_, cell_, ppc_, [&](const Vec<D>& x) {
+        visit(x, point_volume<D>(cell_, ppc_, kinematics_, x));
+      });
+    }
+  }
+  long count() const { return count_; }
+  //! Σ of the points' volumes, in order.
+  double volume() const { return volume_; }
+  const Vec<D>& first() const { return holding_ ? held_.front().first : first_; }
+  //! A membrane's points, which the set-up may put back on a face they lie a round-off beyond.
+  std::vector<std::pair<Vec<D>, double>>& held() { return held_; }
+
+ private:
+  int ppc_;
+  const Region<D>* region_;
+  Vec<D> lower_, upper_;
+  double cell_;
+  Kinematics kinematics_;
+  bool holding_ = false;
+  std::vector<std::pair<Vec<D>, double>> held_;
+  long count_ = 0;
+  double volume_ = 0.0;
+  Vec<D> first_ = Vec<D>::Zero();
+};
 
 //! Whether part of a region lies outside the grid box (where fills place no points) other than
 //! beyond a slip face (a symmetry plane: a quarter model's region is cut there on purpose): a
@@ -156,35 +200,32 @@ std::vector<MirrorPlane> mirror_planes(const Vec<D>& lower, const Vec<D>& upper,
   return planes;
 }
 
-//! Add body `b`'s points as placed (`positions`) to `points`: those `kept` flags, each numbered
+//! Add body `b`'s points as placed (`placement`) to `points`: those `kept` flags, each numbered
 //! by its index in the body in `built_index`, or all of them when `kept` is null. What belongs
 //! to the whole body (its mass and centre, a total_mass's density, the velocity of its first
 //! point, point indices) comes from all its placed points.
 template <int D>
-void add_body(const BodySetup<D>& b, const Material<D>& material,
-              const std::vector<std::pair<Vec<D>, double>>& positions,
+void add_body(const BodySetup<D>& b, const Material<D>& material, const Placement<D>& placement,
               const std::vector<char>* kept, std::shared_ptr<FrameEstimator<D>> frames,
               Column<double> built_index, Particles<D>& points) {
-  const long count = static_cast<long>(positions.size());
+  const long count = placement.count();
   points.bodies.push_back(
       {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), std::move(frames)});
   double density = b.density.value_or(material.density());
-  if (b.total_mass) {
-    double volume = 0.0;
-    for (const auto& entry : positions) volume += entry.second;
-    density = *b.total_mass / volume;
-  }
+  if (b.total_mass) density = *b.total_mass / placement.volume();
   // The kept points, and their indices in the body (all of them without a selection).
   std::vector<long> kept_index;
-  for (long k = 0; k < count; ++k) {
-    if (kept && !(*kept)[k]) continue;
-    const auto& [x, volume] = positions[k];
-    points.add(x, b.velocity, density * volume, density);
-    if (kept) {
-      points[built_index].back() = static_cast<double>(k);
-      kept_index.push_back(k);
+  long k = 0;
+  placement.for_each([&](const Vec<D>& x, double volume) {
+    if (!kept || (*kept)[k]) {
+      points.add(x, b.velocity, density * volume, density);
+      if (kept) {
+        points[built_index].back() = static_cast<double>(k);
+        kept_index.push_back(k);
+      }
     }
-  }
+    ++k;
+  });
   auto& body = points.bodies.back();
   body.built = count;
   body.cut_at = b.cut_at;
@@ -221,12 +262,14 @@ void add_body(const BodySetup<D>& b, const Material<D>& material,
   double body_mass = 0.0;  // the whole body's, in the order it was built
   Vec<D> first_moment = Vec<D>::Zero();
   auto given = explicit_mass.begin();
-  for (long k = 0; k < count; ++k) {
-    double m = density * positions[k].second;
+  k = 0;
+  placement.for_each([&](const Vec<D>& x, double volume) {
+    double m = density * volume;
     if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
     body_mass += m;
-    first_moment += m * positions[k].first;
-  }
+    first_moment += m * x;
+    ++k;
+  });
   body.applied_acceleration = b.external_force / body_mass;
   const Vec<D> center = b.center.value_or(first_moment / body_mass);
   auto swirl = [&](const Vec<D>& x) -> Vec<D> {  // ω × (x − c) + G (x − c)
@@ -236,7 +279,7 @@ void add_body(const BodySetup<D>& b, const Material<D>& material,
            b.velocity_gradient * r.template head<D>();
   };
   for (long p = body.begin; p < body.end; ++p) points.velocity[p] += swirl(points.position[p]);
-  body.start_velocity = b.velocity + swirl(positions.front().first);
+  body.start_velocity = b.velocity + swirl(placement.first());
   for (const auto& [point, velocity] : b.point_velocities) {
     if (point == 0) body.start_velocity = velocity;
     if (const long p = at(point); p >= 0) points.velocity[p] = velocity;
@@ -291,15 +334,14 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
     inside_regions[index] = make_enclosed_region<D>(std::move(enclosure), gap * cell_);
     filled_by[it - bodies_.begin()] = i;
   }
-  std::vector<std::vector<std::pair<Vec<D>, double>>> placed(bodies_.size());
+  std::vector<Placement<D>> placed;
   long total = 0;
   for (std::size_t index = 0; index < bodies_.size(); ++index) {
     const BodySetup<D>& b = bodies_[index];
-    placed[index] =
-        body_points(b, inside_regions[index] ? inside_regions[index].get() : b.region.get(), lower_,
-                    upper_, cell_, settings_.kinematics);
-    total += static_cast<long>(placed[index].size());
-    if (!b.membrane && b.region && !placed[index].empty() &&
+    placed.emplace_back(b, inside_regions[index] ? inside_regions[index].get() : b.region.get(),
+                        lower_, upper_, cell_, settings_.kinematics, !select_);
+    total += placed[index].count();
+    if (!b.membrane && b.region && placed[index].count() > 0 &&
         reaches_outside(*b.region, lower_, upper_, faces_, cell_ / b.points_per_cell))
       log_warning("body '" + b.name +
                   "': part of its region lies outside the grid; that part holds no points");
@@ -328,22 +370,21 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
                           "kernel " + kernel_ +
                               " has one particle size (h / points_per_cell): "
                               "every body must use the same points_per_cell"});
-    auto& positions = placed[index];
-    if (positions.empty()) {
+    const long count = placed[index].count();
+    if (count == 0) {
       if (!b.inside.empty() && !inside_regions[index]) continue;  // reported above
       problems.push_back(
           {i, "region", "body '" + b.name + "': the region holds no point inside the grid"});
       continue;
     }
     bool outside = false;
-    for (auto& [x, v] : positions)  // a curve sampled onto a face may end beyond it by round-off
+    for (auto& [x, v] : placed[index].held())  // a curve sampled onto a face may end beyond it
       outside = outside || !(grid.contains(x) || grid.return_to_face(x));
     if (outside) {
       problems.push_back(
           {i, "membrane", "body '" + b.name + "': membrane points lie outside the grid"});
       continue;
     }
-    const long count = static_cast<long>(positions.size());
     auto check_index = [&](long point, const char* key) {
       if (point >= count)
         problems.push_back({i, key,
@@ -360,10 +401,9 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       setup.grid_origin = lower_;
       setup.cell = cell_;
       setup.mirrors = mirrors;
-      if (filled_by[index] >= 0) {
-        for (const auto& entry : placed[filled_by[index]])
-          setup.orientation.inside.push_back(entry.first);
-      }
+      if (filled_by[index] >= 0)
+        placed[filled_by[index]].for_each(
+            [&](const Vec<D>& x, double) { setup.orientation.inside.push_back(x); });
       setup.orientation.rule =
           b.orientation.value_or(filled_by[index] >= 0 ? NormalOrientation::away_from_inside
                                                        : NormalOrientation::propagate);
@@ -379,11 +419,14 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
   if (select_) {
     std::vector<PlacedBody<D>> all;
     for (std::size_t index = 0; index < bodies_.size(); ++index)
-      all.push_back({bodies_[index].name, placed[index]});
+      all.push_back({bodies_[index].name, placed[index].count(),
+                     [&placement = placed[index]](const std::function<void(const Vec<D>&)>& visit) {
+                       placement.for_each([&](const Vec<D>& x, double) { visit(x); });
+                     }});
     keep = select_(grid, all);
     bool fits = keep.size() == bodies_.size();
     for (std::size_t index = 0; fits && index < keep.size(); ++index)
-      fits = keep[index].size() == placed[index].size();
+      fits = static_cast<long>(keep[index].size()) == placed[index].count();
     if (!fits) throw std::logic_error("a point selection must flag every placed point");
     total = 0;
     for (const auto& flags : keep) total += std::count(flags.begin(), flags.end(), 1);

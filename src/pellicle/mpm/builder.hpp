@@ -83,12 +83,14 @@ class BuildError : public SetupError {
   std::vector<SetupProblem> problems_;
 };
 
-//! One body's points as the builder places them, before any is kept: each point's position and
-//! the volume it stands for, in the order the body is built.
+//! One body's points as the builder places them, before any is kept, in the order the body is
+//! built. A distributed run's rank does not hold them: each walk fills the body's region anew.
 template <int D>
 struct PlacedBody {
   const std::string& name;
-  const std::vector<std::pair<Vec<D>, double>>& points;
+  long count;  //!< its points
+  //! visit(x) for the position of each point in turn.
+  std::function<void(const std::function<void(const Vec<D>&)>& visit)> walk;
 };
 
 //! Which of the placed points this process keeps (a distributed run: those of its patch), a

@@ -22,10 +22,10 @@ class GridFields {
     body_grids_.assign(bodies.size(), centre_of_mass_);
     body_points_ = bodies;
   }
-  //! Every field on a copy of `grid` instead (a distributed run's window).
-  void replace_grid(const Grid<D>& grid) {
-    centre_of_mass_ = grid;
+  //! Every field on `grid` instead (a distributed run's window), each body's on a copy.
+  void replace_grid(Grid<D> grid) {
     for (auto& g : body_grids_) g = grid;
+    centre_of_mass_ = std::move(grid);
   }
   //! New point ranges of the bodies' fields (points moved between ranks).
   void set_body_ranges(const std::vector<PointRange>& bodies) {

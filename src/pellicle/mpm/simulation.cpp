@@ -106,8 +106,8 @@ void Simulation<D>::points_changed() {
 }
 
 template <int D>
-void Simulation<D>::use_grid_window(const Grid<D>& window, const NodeCarrier& carrier) {
-  fields_.replace_grid(window);
+void Simulation<D>::use_grid_window(Grid<D> window, const NodeCarrier& carrier) {
+  fields_.replace_grid(std::move(window));
   for (auto& hook : hooks_) hook->grid_replaced(carrier);
 }
 

@@ -98,7 +98,7 @@ class Simulation final : private Stages {
   const Collective* collective() const { return collective_; }
   //! Store only a window of the grid (Grid::window): a distributed run's patch and halo.
   //! Hooks carry what they keep per node over with `carrier`.
-  void use_grid_window(const Grid<D>& window, const NodeCarrier& carrier);
+  void use_grid_window(Grid<D> window, const NodeCarrier& carrier);
   //! Complete node sums just made from this rank's points (the hooks' after_node_sums).
   void complete_node_sums(const std::vector<NodeArray>& arrays) const {
     for (const auto& hook : hooks_) hook->after_node_sums(arrays);
