@@ -248,6 +248,8 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
       for (auto& array : state)
         if (array.per_node) to_whole_grid->carry(array.values);
     const Column<double> built = p.columns.template find<double>(column_names::body_index);
+    if (!built.valid())
+      throw std::logic_error("a distributed run's points carry their index in their body");
     std::string failure;
     try {
       write_atomically(piece_path(path, ranks->rank()), [&](hid_t file) {
