@@ -87,6 +87,8 @@ cp "$work/first/checkpoint.h5" "$work/c2/checkpoint_r0001.h5"
 expect 2 "not a piece of this checkpoint" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
   --out "$work/badpiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"
 mv "$work/c2/kept.h5" "$work/c2/checkpoint_r0001.h5"
+expect 2 "continue from $work/c2/checkpoint.h5" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
+  --out "$work/apiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint_r0000.h5"
 
 # Probes of points that migrate between the ranks (the pendulum's end mass and angle): the
 # last row as one process writes it, to round-off.

@@ -326,8 +326,16 @@ CheckpointHeader read_checkpoint_header(const std::string& path) {
     throw InputError(where, "--restart", "not an HDF5 file (expected a Pellicle checkpoint)");
   try {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
-    if (H5Aexists(file, "format") <= 0 || read_text(file, "format") != kFormat)
-      throw std::runtime_error("an HDF5 file, but not a Pellicle checkpoint");
+    const std::string format = H5Aexists(file, "format") > 0 ? read_text(file, "format") : "";
+    if (format == kPieceFormat) {  // name_r0003.h5: the index is name.h5
+      const std::filesystem::path piece(path);
+      const std::string stem = piece.stem().string();
+      const std::string index = stem.substr(0, stem.size() - std::min<std::size_t>(6, stem.size()));
+      throw std::runtime_error(
+          "one rank's piece of a distributed run's checkpoint: continue from " +
+          (piece.parent_path() / (index + ".h5")).string());
+    }
+    if (format != kFormat) throw std::runtime_error("an HDF5 file, but not a Pellicle checkpoint");
     CheckpointHeader h;
     h.version = read_text(file, "version");
     h.dimension = static_cast<int>(read_number<long>(file, "dimension"));
