@@ -21,8 +21,6 @@ class Collective {
   virtual double min(double value) const = 0;
   //! Every rank's `mine`, joined in rank order, on every rank.
   virtual std::vector<double> all_gather(const std::vector<double>& mine) const = 0;
-  //! Every rank's `mine`, joined in rank order, on rank 0; empty on the others.
-  virtual std::vector<double> gather_to_first(const std::vector<double>& mine) const = 0;
 };
 
 }  // namespace pellicle

@@ -125,20 +125,6 @@ std::vector<double> Communicator::all_gather(const std::vector<double>& mine) co
   return all;
 }
 
-std::vector<double> Communicator::gather_to_first(const std::vector<double>& mine) const {
-  const int n = static_cast<int>(mine.size());
-  std::vector<int> counts(rank_ == 0 ? size_ : 0), offsets(rank_ == 0 ? size_ : 0, 0);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::vector<double> all;
-  if (rank_ == 0) {
-    for (int r = 1; r < size_; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-    all.resize(static_cast<std::size_t>(offsets.back()) + counts.back());
-  }
-  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0,
-              MPI_COMM_WORLD);
-  return all;
-}
-
 void Communicator::abort(int exit_code) const {
   MPI_Abort(MPI_COMM_WORLD, exit_code);
   std::abort();  // MPI_Abort does not return

@@ -27,7 +27,6 @@ class Communicator final : public Collective {
   double max(double value) const override;
   void max(std::vector<double>& values) const override;
   double min(double value) const override;
-  std::vector<double> gather_to_first(const std::vector<double>& mine) const override;
 
   //! Point-to-point: send each outgoing buffer to its rank and receive each incoming buffer
   //! (sized by the caller) from its rank, all at once; returns when all have arrived.

@@ -28,7 +28,7 @@ void GatheredFrames<D>::estimate(const std::vector<Vec<D>>& position, long begin
     for (const auto* v : {&position[p], &std::as_const(normal)[p], &std::as_const(tangent)[p]})
       out.insert(out.end(), v->data(), v->data() + D);
   };
-  const std::vector<double> all = body_as_built(points_, begin, end, 3 * D, append, &world_, true);
+  const std::vector<double> all = body_as_built(points_, begin, end, 3 * D, append, &world_);
   const long count = static_cast<long>(position_.size());
   if (static_cast<long>(all.size()) != count * 3 * D)
     throw std::logic_error("a membrane body's points on all ranks are " +

@@ -22,7 +22,7 @@ std::vector<Vec<D>> membrane_as_built(const Particles<D>& points, int membrane,
       [&](long p, std::vector<double>& out) {
         out.insert(out.end(), points.position[p].data(), points.position[p].data() + D);
       },
-      ranks, true);
+      ranks);
   std::vector<Vec<D>> out(x.size() / D);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec<D>(x.data() + i * D);
   return out;
