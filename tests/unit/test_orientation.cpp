@@ -66,5 +66,32 @@ TEST(Orientation, ThreeDTangentsAreContinued) {
   EXPECT_GT(t[0].x(), 0.99);  // stays close to the previous t1
 }
 
+TEST(Orientation, EnclosedPointsWithinACellOfTheMembraneDecideEverySide) {
+  // A circle of membrane points and a disk of enclosed points around it (some inside, some
+  // beyond it): the sides found from the points WithinACell keeps equal those found from all.
+  const double cell = 0.25;
+  const std::vector<Vec2> x = circle(120);
+  const std::vector<Vec2> normal = scrambled(x);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> coordinate(2.0, 8.0);
+  std::vector<Vec2> all, kept;
+  const WithinACell<2> near(x, 0, static_cast<long>(x.size()), cell);
+  for (int k = 0; k < 20000; ++k) {
+    const Vec2 y(coordinate(rng), coordinate(rng));
+    all.push_back(y);
+    if (near(y)) kept.push_back(y);
+  }
+  EXPECT_LT(kept.size(), all.size() / 2);
+  EXPECT_GT(kept.size(), 0u);
+  const long n = static_cast<long>(x.size());
+  EXPECT_EQ(sides_from_inside<2>(x, 0, n, normal, kept, cell),
+            sides_from_inside<2>(x, 0, n, normal, all, cell));
+  // A point just beyond a cell of every membrane point is not kept; one just within is.
+  const Vec2 centre(5, 5);
+  EXPECT_FALSE(near(centre));
+  EXPECT_TRUE(near(x[0] + Vec2(0, 0.999 * cell)));
+  EXPECT_FALSE(near(Vec2(5 + 2 + 1.001 * cell, 5)));
+}
+
 }  // namespace
 }  // namespace pellicle

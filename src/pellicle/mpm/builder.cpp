@@ -401,9 +401,15 @@ std::unique_ptr<Simulation<D>> SimulationBuilder<D>::build() {
       setup.grid_origin = lower_;
       setup.cell = cell_;
       setup.mirrors = mirrors;
-      if (filled_by[index] >= 0)
-        placed[filled_by[index]].for_each(
-            [&](const Vec<D>& x, double) { setup.orientation.inside.push_back(x); });
+      if (filled_by[index] >= 0) {
+        // Of the filled body's points, those the first normals look at.
+        std::vector<Vec<D>> membrane;
+        for (const auto& entry : placed[index].held()) membrane.push_back(entry.first);
+        const WithinACell<D> near(membrane, 0, static_cast<long>(membrane.size()), cell_);
+        placed[filled_by[index]].for_each([&](const Vec<D>& y, double) {
+          if (near(y)) setup.orientation.inside.push_back(y);
+        });
+      }
       setup.orientation.rule =
           b.orientation.value_or(filled_by[index] >= 0 ? NormalOrientation::away_from_inside
                                                        : NormalOrientation::propagate);

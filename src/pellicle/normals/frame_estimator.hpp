@@ -13,6 +13,7 @@
 #include "pellicle/core/types.hpp"
 #include "pellicle/geometry/enclosure.hpp"
 #include "pellicle/geometry/membrane_geometry.hpp"
+#include "pellicle/pointcloud/cell_groups.hpp"
 
 namespace pellicle {
 
@@ -28,7 +29,8 @@ enum class NormalOrientation {
   away_from_inside,
 };
 
-//! The rule for first signs, and for away_from_inside the enclosed body's points.
+//! The rule for first signs, and for away_from_inside the enclosed body's points (those
+//! within a cell of the membrane suffice: WithinACell).
 template <int D>
 struct FrameOrientation {
   FrameOrientation(NormalOrientation rule = NormalOrientation::propagate,
@@ -88,5 +90,20 @@ template <int D>
 std::vector<int> sides_from_inside(const std::vector<Vec<D>>& position, long begin, long end,
                                    const std::vector<Vec<D>>& normal,
                                    const std::vector<Vec<D>>& inside, double cell);
+
+//! Whether a place lies within a cell of one of the points [begin, end) of `position` (a
+//! membrane): the enclosed points for which this holds are all that sides_from_inside looks
+//! at, so a membrane's FrameOrientation::inside need keep only those, in their order.
+template <int D>
+class WithinACell {
+ public:
+  WithinACell(const std::vector<Vec<D>>& position, long begin, long end, double cell);
+  bool operator()(const Vec<D>& y) const;
+
+ private:
+  std::vector<Vec<D>> points_;
+  double cell_;
+  CellGroups<D> groups_;  //!< of points_
+};
 
 }  // namespace pellicle

@@ -106,6 +106,25 @@ template void complete_frames<2>(const std::vector<Vec2>&, long, long, const Fra
 template void complete_frames<3>(const std::vector<Vec3>&, long, long, const FrameOrientation<3>&,
                                  const std::vector<Vec3>&, std::vector<Vec3>&, std::vector<Vec3>&,
                                  double);
+template <int D>
+WithinACell<D>::WithinACell(const std::vector<Vec<D>>& position, long begin, long end, double cell)
+    : points_(position.begin() + begin, position.begin() + end),
+      cell_(cell),
+      groups_(points_, 0, end - begin, Vec<D>::Zero(), cell) {}
+
+template <int D>
+bool WithinACell<D>::operator()(const Vec<D>& y) const {
+  // The test of sides_from_inside, |y − x|² ≤ cell², from the other side.
+  bool close = false;
+  groups_.for_each_around(groups_.cell_of(y), [&](int g) {
+    for (const long* q = groups_.begin(g); q != groups_.end(g) && !close; ++q)
+      close = (points_[*q] - y).squaredNorm() <= cell_ * cell_;
+  });
+  return close;
+}
+
+template class WithinACell<2>;
+template class WithinACell<3>;
 template std::vector<int> sides_from_inside<2>(const std::vector<Vec2>&, long, long,
                                                const std::vector<Vec2>&, const std::vector<Vec2>&,
                                                double);
