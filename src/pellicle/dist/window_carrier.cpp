@@ -23,8 +23,9 @@ WindowCarrier<D>::WindowCarrier(const Grid<D>& before, const Grid<D>& after,
                                 const Communicator* world)
     : world_(world) {
   for (int d = 0; d < D; ++d) whole_nodes_ *= before.cells()[d] + 1 + 2 * Grid<D>::kGhost;
-  for (long n = 0; n < before.node_count(); ++n)
-    from_.push_back(!world || before.owns(n) ? whole_index(before, n) : -1);
+  if (world)
+    for (long n = 0; n < before.node_count(); ++n)
+      from_.push_back(before.owns(n) ? whole_index(before, n) : -1);
   for (long n = 0; n < after.node_count(); ++n) to_.push_back(whole_index(after, n));
 }
 
@@ -39,6 +40,13 @@ WindowCarrier<D>::WindowCarrier(const Grid<D>& before, const Communicator& world
 
 template <int D>
 void WindowCarrier<D>::carry(std::vector<double>& values) const {
+  if (!world_) {  // from the whole grid: each node of the window reads its own value
+    std::vector<double> window(to_.size(), 0.0);
+    if (!values.empty())
+      for (std::size_t n = 0; n < to_.size(); ++n) window[n] = values[to_[n]];
+    values.swap(window);
+    return;
+  }
   if (values.empty()) values.assign(from_.size(), 0.0);
   std::vector<double> whole(whole_nodes_, 0.0);
   for (std::size_t n = 0; n < from_.size(); ++n)

@@ -27,8 +27,10 @@ class WindowCarrier final : public NodeCarrier {
  private:
   const Communicator* world_;
   long whole_nodes_ = 1;
-  std::vector<long> from_;  //!< whole-grid index of each node of `before` it owns, else −1
-  std::vector<long> to_;    //!< whole-grid index of each node of `after`
+  //! Whole-grid index of each node of `before` it owns, else −1; empty when `before` is the
+  //! whole grid (world null), whose storage order is the whole grid's.
+  std::vector<long> from_;
+  std::vector<long> to_;  //!< whole-grid index of each node of `after`
 };
 
 extern template class WindowCarrier<2>;
