@@ -213,8 +213,16 @@ void add_body(const BodySetup<D>& b, const Material<D>& material, const Placemen
       {b.name, b.material, Vec<D>::Zero(), points.size(), points.size(), std::move(frames)});
   double density = b.density.value_or(material.density());
   if (b.total_mass) density = *b.total_mass / placement.volume();
-  // The kept points, and their indices in the body (all of them without a selection).
+  // Point masses given explicitly (an end mass on a string) keep their point's volume; the
+  // last given for a point holds.
+  std::map<long, double> explicit_mass;
+  for (const auto& [point, point_mass] : b.point_masses) explicit_mass[point] = point_mass;
+  // One walk: the kept points, their indices in the body (all of them without a selection),
+  // and the whole body's mass and first moment in the order it is built.
   std::vector<long> kept_index;
+  double body_mass = 0.0;
+  Vec<D> first_moment = Vec<D>::Zero();
+  auto given = explicit_mass.begin();
   long k = 0;
   placement.for_each([&](const Vec<D>& x, double volume) {
     if (!kept || (*kept)[k]) {
@@ -224,22 +232,26 @@ void add_body(const BodySetup<D>& b, const Material<D>& material, const Placemen
         kept_index.push_back(k);
       }
     }
+    double m = density * volume;
+    if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
+    body_mass += m;
+    first_moment += m * x;
     ++k;
   });
   auto& body = points.bodies.back();
   body.built = count;
   body.cut_at = b.cut_at;
-  // The first kept point whose index in the body is k or more, and the kept point of index
-  // k (−1 when another process keeps it).
-  auto from = [&](long k) {
-    if (!kept) return body.begin + std::min(k, count);
+  // The first kept point whose index in the body is i or more, and the kept point of index
+  // i (−1 when another process keeps it).
+  auto from = [&](long i) {
+    if (!kept) return body.begin + std::min(i, count);
     return body.begin +
-           static_cast<long>(std::lower_bound(kept_index.begin(), kept_index.end(), k) -
+           static_cast<long>(std::lower_bound(kept_index.begin(), kept_index.end(), i) -
                              kept_index.begin());
   };
-  auto at = [&](long k) {
-    const long p = from(k);
-    return p < body.end && (!kept || kept_index[p - body.begin] == k) ? p : -1;
+  auto at = [&](long i) {
+    const long p = from(i);
+    return p < body.end && (!kept || kept_index[p - body.begin] == i) ? p : -1;
   };
   InitialState<D> state;
   state.internal_energy = b.internal_energy;
@@ -249,27 +261,11 @@ void add_body(const BodySetup<D>& b, const Material<D>& material, const Placemen
   const long last = b.initial_points.second < 0 ? count - 1 : b.initial_points.second;
   if (last < count)
     material.initialise(points, from(b.initial_points.first), from(last + 1), state);
-  // Point masses given explicitly (an end mass on a string) keep their point's volume; the
-  // last given for a point holds.
-  std::map<long, double> explicit_mass;
-  for (const auto& [point, point_mass] : b.point_masses) {
-    explicit_mass[point] = point_mass;
-    const long p = at(point);
-    if (p < 0) continue;
-    points.mass[p] = point_mass;
-    points.density[p] = point_mass / points.volume[p];
-  }
-  double body_mass = 0.0;  // the whole body's, in the order it was built
-  Vec<D> first_moment = Vec<D>::Zero();
-  auto given = explicit_mass.begin();
-  k = 0;
-  placement.for_each([&](const Vec<D>& x, double volume) {
-    double m = density * volume;
-    if (given != explicit_mass.end() && given->first == k) m = (given++)->second;
-    body_mass += m;
-    first_moment += m * x;
-    ++k;
-  });
+  for (const auto& [point, point_mass] : explicit_mass)
+    if (const long p = at(point); p >= 0) {
+      points.mass[p] = point_mass;
+      points.density[p] = point_mass / points.volume[p];
+    }
   body.applied_acceleration = b.external_force / body_mass;
   const Vec<D> center = b.center.value_or(first_moment / body_mass);
   auto swirl = [&](const Vec<D>& x) -> Vec<D> {  // ω × (x − c) + G (x − c)
