@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pellicle/dist/distributed_run.hpp"
+#include "pellicle/dist/halo_frames.hpp"
 #include "pellicle/validation/support.hpp"
 #include "world.hpp"
 
@@ -39,6 +40,8 @@ struct Agreement {
   double enclosed = 0.0;  //!< volumes bodies inside membranes fill, and their membranes' tension
   long steps = 0;
   std::vector<std::pair<std::string, double>> figures;  //!< the split run's summary figures
+  //! The split run's membrane frame estimates from halos and from whole bodies gathered.
+  long halo_frames = 0, gathered_frames = 0;
 };
 
 //! Run the case to its end time whole and split (at most `max_steps`: a broken split run
@@ -146,6 +149,11 @@ Agreement compare_runs(const std::string& file, const std::vector<std::string>& 
   EXPECT_TRUE(whole->finished());
   EXPECT_TRUE(split->finished());
   patches.summary_figures(a.figures);
+  for (const auto& b : split->points().bodies)
+    if (const auto* frames = dynamic_cast<const HaloFrames<D>*>(b.frames.get())) {
+      a.halo_frames += frames->halo_estimates();
+      a.gathered_frames += frames->gathered_estimates();
+    }
   if (world->rank() == 0)
     std::printf(
         "%ld steps on %d ranks: largest differences, relative: time %.2g, energy %.2g, "
@@ -163,6 +171,12 @@ void expect_agreement(const Agreement& a) {
   EXPECT_LE(a.contact, kTolerance);
   EXPECT_LE(a.material, kTolerance);
   EXPECT_LE(a.enclosed, kTolerance);
+}
+
+//! The membrane's frames came from halos at every step but the settling first estimate.
+void expect_halo_frames(const Agreement& a) {
+  EXPECT_EQ(a.gathered_frames, 1);
+  EXPECT_EQ(a.halo_frames, a.steps);
 }
 
 //! On more than one rank, the run split its patches anew at least once.
@@ -266,6 +280,7 @@ TEST(DistributedRun, PendulumAgreesWithOneProcess) {
                        "body[0].point_masses=[[79, 3.3]]"},
                       25000);
   expect_agreement(a);
+  expect_halo_frames(a);
 }
 
 TEST(DistributedRun, GasInAQuarterCircleMembraneAgreesWithOneProcess) {
@@ -273,12 +288,14 @@ TEST(DistributedRun, GasInAQuarterCircleMembraneAgreesWithOneProcess) {
   // the enclosed volume and tension measured from the membrane gathered in its order.
   const Agreement a = compare_runs<2>("fsi_quarter_circle.toml", {}, 2000);
   expect_agreement(a);
+  expect_halo_frames(a);
 }
 
 TEST(DistributedRun, BreathingSphereAgreesWithOneProcess) {
   // A 3D membrane: mesh-connectivity frames of a sphere that every patch cuts.
   const Agreement a = compare_runs<3>("sphere_breathing.toml", {"solver.end_time=0.03"}, 400);
   expect_agreement(a);
+  expect_halo_frames(a);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "pellicle/core/error.hpp"
-#include "pellicle/dist/gathered_frames.hpp"
+#include "pellicle/dist/halo_frames.hpp"
 #include "pellicle/dist/halo_plan.hpp"
 #include "pellicle/dist/migration.hpp"
 #include "pellicle/dist/window_carrier.hpp"
@@ -275,8 +275,9 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
                      " node layers beyond a cell, more than the grid's ghost layers");
   Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
-  gather_membrane_frames(world, points,
-                         points.columns.template find<double>(column_names::body_index));
+  distribute_membrane_frames(world, points,
+                             points.columns.template find<double>(column_names::body_index),
+                             grid.cell());
   const WindowCarrier<D> carrier(grid, window, nullptr);
   simulation.use_grid_window(std::move(window), carrier);
   simulation.points_changed();

@@ -4,7 +4,8 @@
 //! reach, and a hook completes the node sums after each scatter (halo_sums.hpp) and moves
 //! points that left the patch to its owner at the end of each step (migration.hpp). Cell fields
 //! (contact's colour functions, cell densities) are completed like the node sums over the cells
-//! patches share; membrane frames are computed from the whole membrane (gathered_frames.hpp).
+//! patches share; membrane frames from each rank's points and the halo their estimator reaches,
+//! or from the whole membrane where it must (halo_frames.hpp).
 //! Reductions of whole-system quantities go through the communicator in rank order, so np = 1, 2, 3
 //! … agree to round-off.
 

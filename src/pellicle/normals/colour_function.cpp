@@ -47,12 +47,41 @@ class ColourFunction final : public FrameEstimator<D> {
 
   void estimate(const std::vector<Vec<D>>& position, long begin, long end,
                 std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override {
+    frames(position, begin, end, normal, tangent,
+           planes_ended_on<D>(position, begin, end, setup_.mirrors, setup_.cell));
+  }
+
+  //! A point's normal takes the node values of its cell's corners (simple), which sum the
+  //! points of the cells around them, or of the 4^D nodes of its cubic stencil, which sum
+  //! the points within two cells of them. The quadratic variant sums node normals over cells
+  //! in hash-table order, which depends on every cell the body covers.
+  int reach() const override {
+    return kind_ == Colour::simple ? 1 : kind_ == Colour::cubic ? 3 : -1;
+  }
+  unsigned planes_touched(const std::vector<Vec<D>>& position, long begin,
+                          long end) const override {
+    return mirrors_touched<D>(position, begin, end, setup_.mirrors, setup_.cell);
+  }
+  bool estimate_part(const BodyPart& part, const std::vector<Vec<D>>& position,
+                     std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override {
+    if (reach() < 0) return false;
+    frames(position, 0, static_cast<long>(position.size()), normal, tangent,
+           planes_ended_on(part.planes, setup_.mirrors));
+    return true;
+  }
+
+ private:
+  FrameSetup<D> setup_;
+  Colour kind_;
+
+  void frames(const std::vector<Vec<D>>& position, long begin, long end,
+              std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent,
+              const std::vector<MirrorPlane>& ended_on) {
     const std::vector<Vec<D>> previous = normal;
     const double h = setup_.cell;
     // The colour of the points and of their images beyond the planes the membrane ends on
     // (mirror_images.hpp), as wide as the widest (cubic) stencil.
-    const std::vector<Vec<D>> x =
-        with_mirror_images<D>(position, begin, end, setup_.mirrors, h, 2.0 * h);
+    const std::vector<Vec<D>> x = with_images_in<D>(position, begin, end, ended_on, h, 2.0 * h);
     const long cloud = static_cast<long>(x.size()), n = end - begin;
     auto xi = [&](long p) { return Vec<D>((x[p] - setup_.grid_origin) / h); };
     using Key = std::int64_t;
@@ -102,10 +131,6 @@ class ColourFunction final : public FrameEstimator<D> {
     }
     complete_frames<D>(position, begin, end, setup_.orientation, previous, normal, tangent, h);
   }
-
- private:
-  FrameSetup<D> setup_;
-  Colour kind_;
 };
 
 template <int D>

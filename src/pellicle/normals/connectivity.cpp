@@ -31,40 +31,71 @@ int plane_at(const Vec<D>& x, const std::vector<MirrorPlane>& planes, double cel
   return -1;
 }
 
+//! Where the point of index i in the body sits in a part's points, or −1 if not there.
+long find_in(const BodyPart& part, long i) {
+  const auto it = std::lower_bound(part.index.begin(), part.index.end(), i);
+  return it != part.index.end() && *it == i ? it - part.index.begin() : -1;
+}
+
 class CurveConnectivity final : public FrameEstimator<2> {
  public:
   explicit CurveConnectivity(const FrameSetup<2>& setup) : setup_(setup) {}
   void estimate(const std::vector<Vec2>& x, long begin, long end, std::vector<Vec2>& normal,
                 std::vector<Vec2>& tangent) override {
     const long n = end - begin;
-    const bool closed = setup_.connectivity.closed_curve;
-    for (long i = 0; i < n; ++i) {
-      Vec2 before = x[begin + (closed ? (i - 1 + n) % n : std::max(i - 1, 0L))];
-      Vec2 after = x[begin + (closed ? (i + 1) % n : std::min(i + 1, n - 1))];
-      // An open end on a symmetry plane or wall continues into its mirror image there, so its
-      // neighbour beyond the end is the mirrored next point.
-      if (!closed && n > 1 && (i == 0 || i == n - 1)) {
-        const int k = plane_at<2>(x[begin + i], setup_.mirrors, setup_.cell);
-        if (k >= 0) {
-          const MirrorPlane& m = setup_.mirrors[k];
-          Vec2& beyond = i == 0 ? before : after;
-          beyond = x[begin + (i == 0 ? 1 : n - 2)];
-          beyond[m.axis] = 2.0 * m.position - beyond[m.axis];
-        }
-      }
-      const Vec2 t = (after - before).normalized();  // thesis eq 7.1
-      tangent[begin + i] = t;
-      normal[begin + i] = Vec2(-t.y(), t.x());
-    }
+    for (long i = 0; i < n; ++i)
+      frame(
+          i, n, [&](long k) { return &x[begin + k]; }, normal[begin + i], tangent[begin + i]);
     if (sign_ == 0)
       sign_ = enclosed_sign<2>(setup_.orientation, x, begin, end, normal, setup_.cell);
     if (sign_ < 0)
       for (long p = begin; p < end; ++p) normal[p] = -normal[p], tangent[p] = -tangent[p];
   }
 
+  int reach() const override { return 1; }
+
+  bool estimate_part(const BodyPart& part, const std::vector<Vec2>& x, std::vector<Vec2>& normal,
+                     std::vector<Vec2>& tangent) override {
+    if (sign_ == 0) return false;
+    bool complete = true;
+    auto at = [&](long i) -> const Vec2* {
+      const long j = find_in(part, i);
+      complete = complete && j >= 0;
+      return j >= 0 ? &x[j] : &x[0];
+    };
+    for (std::size_t j = 0; j < part.index.size() && complete; ++j) {
+      if (!part.wanted[j]) continue;
+      frame(part.index[j], part.count, at, normal[j], tangent[j]);
+      if (sign_ < 0) normal[j] = -normal[j], tangent[j] = -tangent[j];
+    }
+    return complete;
+  }
+
  private:
   FrameSetup<2> setup_;
   int sign_ = 0;  //!< ±1 once settled at the first call
+
+  //! The frame of point i of a body of n points, whose points `at(k)` gives (thesis eq 7.1).
+  template <class At>
+  void frame(long i, long n, At&& at, Vec2& normal, Vec2& tangent) const {
+    const bool closed = setup_.connectivity.closed_curve;
+    Vec2 before = *at(closed ? (i - 1 + n) % n : std::max(i - 1, 0L));
+    Vec2 after = *at(closed ? (i + 1) % n : std::min(i + 1, n - 1));
+    // An open end on a symmetry plane or wall continues into its mirror image there, so its
+    // neighbour beyond the end is the mirrored next point.
+    if (!closed && n > 1 && (i == 0 || i == n - 1)) {
+      const int k = plane_at<2>(*at(i), setup_.mirrors, setup_.cell);
+      if (k >= 0) {
+        const MirrorPlane& m = setup_.mirrors[k];
+        Vec2& beyond = i == 0 ? before : after;
+        beyond = *at(i == 0 ? 1 : n - 2);
+        beyond[m.axis] = 2.0 * m.position - beyond[m.axis];
+      }
+    }
+    const Vec2 t = (after - before).normalized();  // thesis eq 7.1
+    tangent = t;
+    normal = Vec2(-t.y(), t.x());
+  }
 };
 
 class MeshConnectivity final : public FrameEstimator<3> {
@@ -89,10 +120,7 @@ class MeshConnectivity final : public FrameEstimator<3> {
     }
     // A boundary point on a symmetry plane or wall: its mirrored triangles would cancel the
     // normal's component across the plane.
-    for (int i : boundary_) {
-      const int k = plane_at<3>(x[begin + i], setup_.mirrors, setup_.cell);
-      if (k >= 0) normal[begin + i][setup_.mirrors[k].axis] = 0.0;
-    }
+    for (int i : boundary_) off_plane(x[begin + i], normal[begin + i]);
     for (long p = begin; p < end; ++p) normal[p].normalize();
     if (sign_ == 0)
       sign_ = enclosed_sign<3>(setup_.orientation, x, begin, end, normal, setup_.cell);
@@ -102,10 +130,56 @@ class MeshConnectivity final : public FrameEstimator<3> {
     }
   }
 
+  int reach() const override { return 1; }
+
+  bool estimate_part(const BodyPart& part, const std::vector<Vec3>& x, std::vector<Vec3>& normal,
+                     std::vector<Vec3>& tangent) override {
+    if (sign_ == 0) return false;
+    if (triangles_at_.empty()) index_triangles(part.count);
+    for (std::size_t j = 0; j < part.index.size(); ++j) {
+      if (!part.wanted[j]) continue;
+      const long i = part.index[j];
+      // The sum estimate forms, triangle by triangle in the mesh's order.
+      Vec3 n = Vec3::Zero();
+      for (int f = triangles_at_[i]; f < triangles_at_[i + 1]; ++f) {
+        const auto& t = setup_.connectivity.triangles[triangle_[f]];
+        long at[3];
+        for (int c = 0; c < 3; ++c)
+          if ((at[c] = find_in(part, t[c])) < 0) return false;
+        n += (x[at[1]] - x[at[0]]).cross(x[at[2]] - x[at[0]]);
+      }
+      if (std::binary_search(boundary_.begin(), boundary_.end(), static_cast<int>(i)))
+        off_plane(x[j], n);
+      normal[j] = n.normalized();
+      if (sign_ < 0) normal[j] = -normal[j];
+      tangent[j] = continue_tangent(tangent[j], normal[j]);
+    }
+    return true;
+  }
+
  private:
   FrameSetup<3> setup_;
   std::vector<int> boundary_;  //!< points on an edge used by one triangle only
   int sign_ = 0;
+  //! The triangles at each point, in the mesh's order: triangle_[triangles_at_[i] …
+  //! triangles_at_[i + 1]) (built at the first estimate_part).
+  std::vector<int> triangles_at_, triangle_;
+
+  void off_plane(const Vec3& x, Vec3& normal) const {
+    const int k = plane_at<3>(x, setup_.mirrors, setup_.cell);
+    if (k >= 0) normal[setup_.mirrors[k].axis] = 0.0;
+  }
+  void index_triangles(long points) {
+    const auto& triangles = setup_.connectivity.triangles;
+    triangles_at_.assign(points + 1, 0);
+    for (const auto& t : triangles)
+      for (int k : t) ++triangles_at_[k + 1];
+    for (long i = 0; i < points; ++i) triangles_at_[i + 1] += triangles_at_[i];
+    triangle_.resize(triangles_at_[points]);
+    std::vector<int> next(triangles_at_.begin(), triangles_at_.end() - 1);
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+      for (int k : triangles[f]) triangle_[next[k]++] = static_cast<int>(f);
+  }
 };
 
 }  // namespace

@@ -53,6 +53,18 @@ struct FrameSetup {
   unsigned seed = 20000;  //!< seeds the isosurface method's extra points (reproducible)
 };
 
+//! Part of a membrane body, for a distributed run whose ranks each hold some of its points
+//! (dist/halo_frames.hpp): the points whose frames are wanted and the body's points around
+//! them, in the body's generation order.
+struct BodyPart {
+  std::vector<long> index;   //!< each point's index in the body as built, ascending
+  std::vector<char> wanted;  //!< 1 where the point's frame is wanted
+  long count = 0;            //!< points of the whole body
+  //! The FrameSetup::mirrors the whole body touches (FrameEstimator::planes_touched, ORed
+  //! over the parts).
+  unsigned planes = 0;
+};
+
 template <int D>
 class FrameEstimator {
  public:
@@ -62,6 +74,27 @@ class FrameEstimator {
   //! side, 3D tangents are continued, so the membrane strain never sees a frame jump.
   virtual void estimate(const std::vector<Vec<D>>& position, long begin, long end,
                         std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) = 0;
+
+  //! Frames from parts of the body. Once every point of the body has a frame and estimate
+  //! has run once on the whole body (which settles first signs), a point's frame depends
+  //! only on the body's points in the grid cells within reach() cells of its own (the
+  //! (2 reach + 1)^D cells around it), or, for connectivity frames, on its neighbours in the
+  //! mesh, which lie that near unless the membrane is torn apart. −1 (the default): a frame
+  //! depends on the whole body, as for a scale taken over all its points.
+  virtual int reach() const { return -1; }
+  //! The mirror planes (bit k: FrameSetup::mirrors[k]) one of points [begin, end) lies on.
+  virtual unsigned planes_touched(const std::vector<Vec<D>>& /*position*/, long /*begin*/,
+                                  long /*end*/) const {
+    return 0;
+  }
+  //! Frames of `part`'s wanted points: `position`, `normal` and `tangent` hold all of its
+  //! points, with their previous frames on entry, every normal set. The wanted frames come
+  //! out bitwise as estimate on the whole body gives them. False, with nothing promised,
+  //! when the part lacks a point a wanted frame needs or the estimator has no part of it.
+  virtual bool estimate_part(const BodyPart& /*part*/, const std::vector<Vec<D>>& /*position*/,
+                             std::vector<Vec<D>>& /*normal*/, std::vector<Vec<D>>& /*tangent*/) {
+    return false;
+  }
 };
 
 template <int D>

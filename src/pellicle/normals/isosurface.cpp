@@ -446,15 +446,49 @@ void IsosurfaceEstimator<D>::gradients(const std::vector<Vec<D>>& x, long begin,
 template <int D>
 void IsosurfaceEstimator<D>::estimate(const std::vector<Vec<D>>& position, long begin, long end,
                                       std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) {
+  frames(position, begin, end, normal, tangent,
+         planes_ended_on<D>(position, begin, end, setup_.mirrors, setup_.cell));
+}
+
+template <int D>
+int IsosurfaceEstimator<D>::reach() const {
+  // A cell's fit takes the points of its cell and their images beyond the planes it touches
+  // (0), or, with the hybrid rule, those of the block of up to 4^D cells it joins, within 3
+  // cells of it, and their images, which are images of points within 3 cells too. The guarded
+  // variant's neighbourhood radius follows the whole body's point spacing.
+  if (guarded_) return -1;
+  return basis_ == IsosurfaceBasis::hybrid ? 3 : 0;
+}
+
+template <int D>
+unsigned IsosurfaceEstimator<D>::planes_touched(const std::vector<Vec<D>>& position, long begin,
+                                                long end) const {
+  return mirrors_touched<D>(position, begin, end, setup_.mirrors, setup_.cell);
+}
+
+template <int D>
+bool IsosurfaceEstimator<D>::estimate_part(const BodyPart& part,
+                                           const std::vector<Vec<D>>& position,
+                                           std::vector<Vec<D>>& normal,
+                                           std::vector<Vec<D>>& tangent) {
+  if (reach() < 0) return false;
+  frames(position, 0, static_cast<long>(position.size()), normal, tangent,
+         planes_ended_on(part.planes, setup_.mirrors));
+  return true;
+}
+
+template <int D>
+void IsosurfaceEstimator<D>::frames(const std::vector<Vec<D>>& position, long begin, long end,
+                                    std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent,
+                                    const std::vector<MirrorPlane>& ended_on) {
   const std::vector<Vec<D>> previous(normal.begin() + begin, normal.begin() + end);
   // The fits see the points' mirror images beyond the symmetry planes the membrane ends on
   // (mirror_images.hpp); two cells cover every block a cell next to a plane can join.
   const std::vector<Vec<D>> cloud =
-      with_mirror_images<D>(position, begin, end, setup_.mirrors, setup_.cell, 2.0 * setup_.cell);
+      with_images_in<D>(position, begin, end, ended_on, setup_.cell, 2.0 * setup_.cell);
   const long n = end - begin;
   std::vector<Vec<D>> raw(cloud.size(), Vec<D>::Zero());
-  gradients(cloud, 0, static_cast<long>(cloud.size()), raw,
-            planes_ended_on<D>(position, begin, end, setup_.mirrors, setup_.cell));
+  gradients(cloud, 0, static_cast<long>(cloud.size()), raw, ended_on);
   if (guarded_) {
     // Where χ has too little slope across the points for its gradient to mean anything (its
     // maximum is about 1 on them: paper §8), the neighbours' direction of least spread.

@@ -67,6 +67,10 @@ class IsosurfaceEstimator final : public FrameEstimator<D> {
         guarded_(options.guarded) {}
   void estimate(const std::vector<Vec<D>>& position, long begin, long end,
                 std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override;
+  int reach() const override;
+  unsigned planes_touched(const std::vector<Vec<D>>& position, long begin, long end) const override;
+  bool estimate_part(const BodyPart& part, const std::vector<Vec<D>>& position,
+                     std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent) override;
 
   //! Raw unit gradients ∇χ/|∇χ| of points [begin, end), no orientation (the paper's output).
   void gradients(const std::vector<Vec<D>>& position, long begin, long end,
@@ -90,6 +94,10 @@ class IsosurfaceEstimator final : public FrameEstimator<D> {
   //! their images, which lie in the cell beyond it.
   void gradients(const std::vector<Vec<D>>& position, long begin, long end,
                  std::vector<Vec<D>>& normal, const std::vector<MirrorPlane>& planes);
+  //! estimate, with the planes the body ends on given.
+  void frames(const std::vector<Vec<D>>& position, long begin, long end,
+              std::vector<Vec<D>>& normal, std::vector<Vec<D>>& tangent,
+              const std::vector<MirrorPlane>& ended_on);
 };
 
 template <int D>

@@ -5,18 +5,28 @@
 namespace pellicle {
 
 template <int D>
-std::vector<MirrorPlane> planes_ended_on(const std::vector<Vec<D>>& x, long begin, long end,
-                                         const std::vector<MirrorPlane>& mirrors, double cell) {
-  // One per axis at most: a membrane cannot end on both faces of an axis and be mirrored in
-  // both without repeating itself.
-  std::vector<MirrorPlane> used;
-  for (const auto& m : mirrors) {
+unsigned mirrors_touched(const std::vector<Vec<D>>& x, long begin, long end,
+                         const std::vector<MirrorPlane>& mirrors, double cell) {
+  unsigned touched = 0;
+  for (std::size_t k = 0; k < mirrors.size(); ++k) {
+    const MirrorPlane& m = mirrors[k];
     bool on = false;
     for (long p = begin; p < end && !on; ++p)
       on = std::abs(x[p][m.axis] - m.position) <= 0.01 * cell;
+    if (on) touched |= 1u << k;
+  }
+  return touched;
+}
+
+std::vector<MirrorPlane> planes_ended_on(unsigned touched,
+                                         const std::vector<MirrorPlane>& mirrors) {
+  // One per axis at most: a membrane cannot end on both faces of an axis and be mirrored in
+  // both without repeating itself.
+  std::vector<MirrorPlane> used;
+  for (std::size_t k = 0; k < mirrors.size(); ++k) {
     bool axis_taken = false;
-    for (const auto& u : used) axis_taken = axis_taken || u.axis == m.axis;
-    if (on && !axis_taken) used.push_back(m);
+    for (const auto& u : used) axis_taken = axis_taken || u.axis == mirrors[k].axis;
+    if ((touched >> k & 1u) && !axis_taken) used.push_back(mirrors[k]);
   }
   return used;
 }
@@ -25,8 +35,14 @@ template <int D>
 std::vector<Vec<D>> with_mirror_images(const std::vector<Vec<D>>& x, long begin, long end,
                                        const std::vector<MirrorPlane>& mirrors, double cell,
                                        double band) {
+  return with_images_in<D>(x, begin, end, planes_ended_on<D>(x, begin, end, mirrors, cell), cell,
+                           band);
+}
+
+template <int D>
+std::vector<Vec<D>> with_images_in(const std::vector<Vec<D>>& x, long begin, long end,
+                                   const std::vector<MirrorPlane>& used, double cell, double band) {
   std::vector<Vec<D>> cloud(x.begin() + begin, x.begin() + end);
-  const std::vector<MirrorPlane> used = planes_ended_on<D>(x, begin, end, mirrors, cell);
   const int planes = static_cast<int>(used.size());
   for (int subset = 1; subset < (1 << planes); ++subset) {
     for (long p = begin; p < end; ++p) {
@@ -46,10 +62,14 @@ std::vector<Vec<D>> with_mirror_images(const std::vector<Vec<D>>& x, long begin,
   return cloud;
 }
 
-template std::vector<MirrorPlane> planes_ended_on<2>(const std::vector<Vec<2>>&, long, long,
-                                                     const std::vector<MirrorPlane>&, double);
-template std::vector<MirrorPlane> planes_ended_on<3>(const std::vector<Vec<3>>&, long, long,
-                                                     const std::vector<MirrorPlane>&, double);
+template unsigned mirrors_touched<2>(const std::vector<Vec<2>>&, long, long,
+                                     const std::vector<MirrorPlane>&, double);
+template unsigned mirrors_touched<3>(const std::vector<Vec<3>>&, long, long,
+                                     const std::vector<MirrorPlane>&, double);
+template std::vector<Vec<2>> with_images_in<2>(const std::vector<Vec<2>>&, long, long,
+                                               const std::vector<MirrorPlane>&, double, double);
+template std::vector<Vec<3>> with_images_in<3>(const std::vector<Vec<3>>&, long, long,
+                                               const std::vector<MirrorPlane>&, double, double);
 template std::vector<Vec<2>> with_mirror_images<2>(const std::vector<Vec<2>>&, long, long,
                                                    const std::vector<MirrorPlane>&, double, double);
 template std::vector<Vec<3>> with_mirror_images<3>(const std::vector<Vec<3>>&, long, long,

@@ -15,11 +15,22 @@
 
 namespace pellicle {
 
-//! The planes of `mirrors` that a point of [begin, end) lies on (within a hundredth of
-//! `cell`), at most one per axis: the planes the membrane ends on.
+//! The planes of `mirrors` (bit k for mirrors[k]) that a point of [begin, end) lies on,
+//! within a hundredth of `cell`. ORed over the parts of a body, the body's.
+template <int D>
+unsigned mirrors_touched(const std::vector<Vec<D>>& x, long begin, long end,
+                         const std::vector<MirrorPlane>& mirrors, double cell);
+
+//! Of the `touched` planes of `mirrors`, at most one per axis (the first): the planes the
+//! membrane ends on.
+std::vector<MirrorPlane> planes_ended_on(unsigned touched, const std::vector<MirrorPlane>& mirrors);
+
+//! The planes the points [begin, end) of `x` end on: the two above together.
 template <int D>
 std::vector<MirrorPlane> planes_ended_on(const std::vector<Vec<D>>& x, long begin, long end,
-                                         const std::vector<MirrorPlane>& mirrors, double cell);
+                                         const std::vector<MirrorPlane>& mirrors, double cell) {
+  return planes_ended_on(mirrors_touched<D>(x, begin, end, mirrors, cell), mirrors);
+}
 
 //! Points [begin, end) of `x` (as entries 0 … end − begin − 1) followed by their mirror
 //! images in each plane of `mirrors` that one of them lies on (within a hundredth of `cell`):
@@ -29,5 +40,12 @@ template <int D>
 std::vector<Vec<D>> with_mirror_images(const std::vector<Vec<D>>& x, long begin, long end,
                                        const std::vector<MirrorPlane>& mirrors, double cell,
                                        double band);
+
+//! The same with the planes given (`ended_on`, as planes_ended_on finds them): for a part of
+//! a body, whose own points may not reach the planes the whole body ends on.
+template <int D>
+std::vector<Vec<D>> with_images_in(const std::vector<Vec<D>>& x, long begin, long end,
+                                   const std::vector<MirrorPlane>& ended_on, double cell,
+                                   double band);
 
 }  // namespace pellicle
