@@ -1,7 +1,9 @@
 #include "pellicle/dist/halo_frames.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -116,13 +118,26 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
     long own;              //!< this rank's point, or −1
     const double* record;  //!< the halo record (position, normal), or null
   };
-  std::vector<Entry> entries;
-  for (long p = begin; p < end; ++p) entries.push_back({static_cast<long>(index[p]), p, nullptr});
+  auto by_index = [](const Entry& a, const Entry& b) { return a.index < b.index; };
+  // This rank's points in order, sorted anew only when migration has changed them.
+  if (!std::equal(index.begin() + begin, index.begin() + end, own_index_.begin(),
+                  own_index_.end())) {
+    own_index_.assign(index.begin() + begin, index.begin() + end);
+    own_order_.resize(end - begin);
+    std::iota(own_order_.begin(), own_order_.end(), 0L);
+    std::sort(own_order_.begin(), own_order_.end(),
+              [&](long a, long b) { return own_index_[a] < own_index_[b]; });
+  }
+  std::vector<Entry> own, halo, entries;
+  own.reserve(end - begin);
+  for (long k : own_order_) own.push_back({static_cast<long>(own_index_[k]), begin + k, nullptr});
   for (const auto& from : from_rank)
     for (std::size_t k = 0; k < from.size(); k += 1 + 2 * D)
-      entries.push_back({static_cast<long>(from[k]), -1, from.data() + k + 1});
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.index < b.index; });
+      halo.push_back({static_cast<long>(from[k]), -1, from.data() + k + 1});
+  std::sort(halo.begin(), halo.end(), by_index);
+  entries.reserve(own.size() + halo.size());
+  std::merge(own.begin(), own.end(), halo.begin(), halo.end(), std::back_inserter(entries),
+             by_index);
   const std::size_t n = entries.size();
   part.index.resize(n);
   part.wanted.resize(n);

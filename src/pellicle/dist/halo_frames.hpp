@@ -47,6 +47,9 @@ class HaloFrames final : public FrameEstimator<D> {
   double cell_;
   long halo_estimates_ = 0, gathered_estimates_ = 0;
   std::vector<Vec<D>> position_, normal_, tangent_;  //!< the part or the whole body, in order
+  //! This rank's points' indices in the body when last sorted, and their order by index.
+  std::vector<double> own_index_;
+  std::vector<long> own_order_;
 
   //! The halo estimate; false (on every rank) when the whole body must be gathered instead.
   bool from_halo(const std::vector<Vec<D>>& position, long begin, long end,

@@ -31,11 +31,27 @@ int plane_at(const Vec<D>& x, const std::vector<MirrorPlane>& planes, double cel
   return -1;
 }
 
-//! Where the point of index i in the body sits in a part's points, or −1 if not there.
-long find_in(const BodyPart& part, long i) {
-  const auto it = std::lower_bound(part.index.begin(), part.index.end(), i);
-  return it != part.index.end() && *it == i ? it - part.index.begin() : -1;
-}
+//! Where each point of a body sits in a part, by its index in the body (−1: not in the
+//! part): a table as long as the body, which the connectivity estimators hold anyway in
+//! their mesh, filled for one part and emptied again after it.
+class PartSlots {
+ public:
+  //! Slots of `part`'s points in `table` (grown to the body) while this lives.
+  PartSlots(std::vector<long>& table, const BodyPart& part) : table_(table), part_(part) {
+    table_.resize(part.count, -1);
+    for (std::size_t j = 0; j < part.index.size(); ++j) table_[part.index[j]] = j;
+  }
+  ~PartSlots() {
+    for (long i : part_.index) table_[i] = -1;
+  }
+  PartSlots(const PartSlots&) = delete;
+  PartSlots& operator=(const PartSlots&) = delete;
+  long operator[](long i) const { return table_[i]; }
+
+ private:
+  std::vector<long>& table_;
+  const BodyPart& part_;
+};
 
 class CurveConnectivity final : public FrameEstimator<2> {
  public:
@@ -57,9 +73,10 @@ class CurveConnectivity final : public FrameEstimator<2> {
   bool estimate_part(const BodyPart& part, const std::vector<Vec2>& x, std::vector<Vec2>& normal,
                      std::vector<Vec2>& tangent) override {
     if (sign_ == 0) return false;
+    const PartSlots slot(slots_, part);
     bool complete = true;
     auto at = [&](long i) -> const Vec2* {
-      const long j = find_in(part, i);
+      const long j = slot[i];
       complete = complete && j >= 0;
       return j >= 0 ? &x[j] : &x[0];
     };
@@ -73,7 +90,8 @@ class CurveConnectivity final : public FrameEstimator<2> {
 
  private:
   FrameSetup<2> setup_;
-  int sign_ = 0;  //!< ±1 once settled at the first call
+  int sign_ = 0;             //!< ±1 once settled at the first call
+  std::vector<long> slots_;  //!< PartSlots' table
 
   //! The frame of point i of a body of n points, whose points `at(k)` gives (thesis eq 7.1).
   template <class At>
@@ -136,6 +154,7 @@ class MeshConnectivity final : public FrameEstimator<3> {
                      std::vector<Vec3>& tangent) override {
     if (sign_ == 0) return false;
     if (triangles_at_.empty()) index_triangles(part.count);
+    const PartSlots slot(slots_, part);
     for (std::size_t j = 0; j < part.index.size(); ++j) {
       if (!part.wanted[j]) continue;
       const long i = part.index[j];
@@ -145,7 +164,7 @@ class MeshConnectivity final : public FrameEstimator<3> {
         const auto& t = setup_.connectivity.triangles[triangle_[f]];
         long at[3];
         for (int c = 0; c < 3; ++c)
-          if ((at[c] = find_in(part, t[c])) < 0) return false;
+          if ((at[c] = slot[t[c]]) < 0) return false;
         n += (x[at[1]] - x[at[0]]).cross(x[at[2]] - x[at[0]]);
       }
       if (std::binary_search(boundary_.begin(), boundary_.end(), static_cast<int>(i)))
@@ -164,6 +183,7 @@ class MeshConnectivity final : public FrameEstimator<3> {
   //! The triangles at each point, in the mesh's order: triangle_[triangles_at_[i] …
   //! triangles_at_[i + 1]) (built at the first estimate_part).
   std::vector<int> triangles_at_, triangle_;
+  std::vector<long> slots_;  //!< PartSlots' table
 
   void off_plane(const Vec3& x, Vec3& normal) const {
     const int k = plane_at<3>(x, setup_.mirrors, setup_.cell);
