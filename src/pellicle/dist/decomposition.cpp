@@ -18,88 +18,157 @@ long CellCounts<D>::at(const IVec<D>& cell) const {
 
 namespace {
 
-//! Sums of the points of a box per plane across `axis` (weight 1 per cell when uniform).
+//! A box of the bisection: cells [lower, upper) for ranks [first_rank, first_rank + ranks).
+//! A box of several ranks is cut across `axis`: cells below `cut` along it go to its lower
+//! child, boxes[child], the rest to the upper one, boxes[child + 1].
 template <int D>
-std::vector<double> plane_sums(const CellCounts<D>& counts, const IVec<D>& lower,
-                               const IVec<D>& upper, int axis, bool uniform) {
-  std::vector<double> sums(upper[axis] - lower[axis], 0.0);
-  IVec<D> cell = lower;
-  while (true) {
-    sums[cell[axis] - lower[axis]] += uniform ? 1.0 : static_cast<double>(counts.at(cell));
-    int d = 0;  // next cell of the box, axis 0 fastest
-    while (d < D && ++cell[d] == upper[d]) cell[d] = lower[d], ++d;
-    if (d == D) break;
-  }
-  return sums;
+struct Box {
+  IVec<D> lower, upper;
+  int ranks = 1, first_rank = 0;
+  int axis = 0, cut = 0;
+  int child = -1;       //!< −1 until cut
+  bool pending = true;  //!< its points are still to be counted
+  long offset = 0;      //!< where its plane sums start in its level's sums
+  int planes() const { return ranks > 1 ? upper[axis] - lower[axis] : 1; }
+};
+
+//! The box of `boxes` (a bisection tree, rooted at boxes[0]) not yet cut that holds `cell`.
+template <int D>
+int box_of(const std::vector<Box<D>>& boxes, const IVec<D>& cell) {
+  int b = 0;
+  while (boxes[b].child >= 0) b = boxes[b].child + (cell[boxes[b].axis] >= boxes[b].cut ? 1 : 0);
+  return b;
 }
 
+//! The axis a box of several ranks is cut across: from the longest extent down, the first
+//! with room for two patches.
 template <int D>
-void bisect(const CellCounts<D>& counts, const IVec<D>& lower, const IVec<D>& upper, int ranks,
-            int first_rank, int min_cells, bool uniform, std::vector<Patch<D>>& out) {
-  if (ranks == 1) {
-    Patch<D> p{lower, upper, first_rank, 0};
-    const auto sums = plane_sums(counts, lower, upper, 0, false);
-    p.points = std::lround(std::accumulate(sums.begin(), sums.end(), 0.0));
-    out.push_back(p);
-    return;
-  }
-  const int low_ranks = ranks / 2;
-  // Axes from the longest box extent down; the first with room for two patches is cut.
+int cut_axis(const Box<D>& box, int min_cells) {
   std::array<int, D> axes;
   std::iota(axes.begin(), axes.end(), 0);
-  std::stable_sort(axes.begin(), axes.end(),
-                   [&](int a, int b) { return upper[a] - lower[a] > upper[b] - lower[b]; });
-  for (int axis : axes) {
-    const int extent = upper[axis] - lower[axis];
-    if (extent < 2 * min_cells) continue;
-    const auto sums = plane_sums(counts, lower, upper, axis, uniform);
-    const double total = std::accumulate(sums.begin(), sums.end(), 0.0);
-    const double target = total * low_ranks / ranks;
-    double below = 0.0, best_error = std::numeric_limits<double>::infinity();
-    // The best cuts' first run of neighbouring planes (empty planes between two bodies):
-    // the middle one leaves the points farthest from the cut, so fewest cross it.
-    int best_first = min_cells, best_last = min_cells;
-    for (int c = 0; c < extent - min_cells; ++c) {
-      below += sums[c];
-      const int cut = c + 1;  // planes [0, cut) go to the lower side
-      if (cut < min_cells) continue;
-      const double error = std::abs(below - target);
-      if (error < best_error)
-        best_error = error, best_first = best_last = cut;
-      else if (error == best_error && cut == best_last + 1)
-        best_last = cut;
-    }
-    const int best = (best_first + best_last) / 2;
-    IVec<D> middle_upper = upper, middle_lower = lower;
-    middle_upper[axis] = lower[axis] + best;
-    middle_lower[axis] = lower[axis] + best;
-    bisect(counts, lower, middle_upper, low_ranks, first_rank, min_cells, uniform, out);
-    bisect(counts, middle_lower, upper, ranks - low_ranks, first_rank + low_ranks, min_cells,
-           uniform, out);
-    return;
-  }
+  const IVec<D> extent = box.upper - box.lower;
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return extent[a] > extent[b]; });
+  for (int axis : axes)
+    if (extent[axis] >= 2 * min_cells) return axis;
   std::string size;
-  for (int d = 0; d < D; ++d) size += (d ? " x " : "") + std::to_string(upper[d] - lower[d]);
-  throw std::invalid_argument("cannot split " + size + " cells among " + std::to_string(ranks) +
+  for (int d = 0; d < D; ++d) size += (d ? " x " : "") + std::to_string(extent[d]);
+  throw std::invalid_argument("cannot split " + size + " cells among " + std::to_string(box.ranks) +
                               " ranks with patches at least " + std::to_string(min_cells) +
                               " cells wide: use fewer ranks or a finer grid");
+}
+
+//! The planes [0, cut) of a box that go to its lower side: the share of the points per plane
+//! `sums` closest to low_ranks / ranks, with at least `min_cells` planes on either side; of
+//! the best cuts' first run of neighbouring planes (empty planes between two bodies), the
+//! middle one, which leaves the points farthest from the cut, so that fewest cross it.
+int best_cut(const std::vector<double>& sums, int low_ranks, int ranks, int min_cells) {
+  const int extent = static_cast<int>(sums.size());
+  const double total = std::accumulate(sums.begin(), sums.end(), 0.0);
+  const double target = total * low_ranks / ranks;
+  double below = 0.0, best_error = std::numeric_limits<double>::infinity();
+  int best_first = min_cells, best_last = min_cells;
+  for (int c = 0; c < extent - min_cells; ++c) {
+    below += sums[c];
+    const int cut = c + 1;
+    if (cut < min_cells) continue;
+    const double error = std::abs(below - target);
+    if (error < best_error)
+      best_error = error, best_first = best_last = cut;
+    else if (error == best_error && cut == best_last + 1)
+      best_last = cut;
+  }
+  return (best_first + best_last) / 2;
 }
 
 }  // namespace
 
 template <int D>
-std::vector<Patch<D>> bisect_patches(const CellCounts<D>& counts, int ranks, int min_cells) {
+std::vector<Patch<D>> bisect_patches(const IVec<D>& cells, int ranks, int min_cells,
+                                     const CellVisits<D>& points, const SumOverRanks& sum) {
   if (ranks < 1) throw std::invalid_argument("the number of ranks must be at least 1");
+  min_cells = std::max(min_cells, 1);
+  std::vector<Box<D>> boxes{{IVec<D>::Zero(), cells, ranks, 0}};
+  std::vector<Patch<D>> patches;
+  std::vector<int> level = {0};  // the boxes to count and cut
+  bool uniform = false;          // no points at all: cells weigh equally
+  for (bool root = true; !level.empty(); root = false) {
+    long planes = 0;
+    for (int b : level) {
+      if (boxes[b].ranks > 1) boxes[b].axis = cut_axis(boxes[b], min_cells);
+      boxes[b].offset = planes;
+      planes += boxes[b].planes();
+    }
+    std::vector<long> counts(planes, 0);
+    if (!uniform) {
+      points([&](const IVec<D>& cell, long n) {
+        const Box<D>& box = boxes[box_of(boxes, cell)];
+        if (box.pending)
+          counts[box.offset + (box.ranks > 1 ? cell[box.axis] - box.lower[box.axis] : 0)] += n;
+      });
+      sum(counts);
+      uniform = root && std::all_of(counts.begin(), counts.end(), [](long n) { return n == 0; });
+    }
+    std::vector<int> next;
+    for (int b : level) {
+      boxes[b].pending = false;
+      const Box<D> box = boxes[b];
+      if (box.ranks == 1) {  // the grid, one patch
+        patches.push_back({box.lower, box.upper, box.first_rank, counts[box.offset]});
+        continue;
+      }
+      std::vector<double> sums(box.planes());
+      long cross_section = 1;  // cells per plane
+      for (int d = 0; d < D; ++d)
+        if (d != box.axis) cross_section *= box.upper[d] - box.lower[d];
+      for (int c = 0; c < box.planes(); ++c)
+        sums[c] = static_cast<double>(uniform ? cross_section : counts[box.offset + c]);
+      const int low_ranks = box.ranks / 2;
+      const int cut = best_cut(sums, low_ranks, box.ranks, min_cells);
+      Box<D> lower = box, upper = box;
+      lower.upper[box.axis] = upper.lower[box.axis] = box.lower[box.axis] + cut;
+      lower.ranks = low_ranks;
+      upper.ranks = box.ranks - low_ranks;
+      upper.first_rank = box.first_rank + low_ranks;
+      lower.pending = upper.pending = true;
+      lower.child = upper.child = -1;
+      long lower_points = 0, upper_points = 0;  // for the sides of one rank: their patches
+      for (int c = 0; c < box.planes(); ++c)
+        (c < cut ? lower_points : upper_points) += counts[box.offset + c];
+      boxes[b].cut = box.lower[box.axis] + cut;
+      boxes[b].child = static_cast<int>(boxes.size());
+      for (const auto& [side, points_in] :
+           {std::pair{lower, lower_points}, std::pair{upper, upper_points}}) {
+        if (side.ranks == 1) {
+          patches.push_back({side.lower, side.upper, side.first_rank, points_in});
+          boxes.push_back(side);
+          boxes.back().pending = false;
+        } else {
+          next.push_back(static_cast<int>(boxes.size()));
+          boxes.push_back(side);
+        }
+      }
+    }
+    level = std::move(next);
+  }
+  std::sort(patches.begin(), patches.end(),
+            [](const Patch<D>& a, const Patch<D>& b) { return a.rank < b.rank; });
+  return patches;
+}
+
+template <int D>
+std::vector<Patch<D>> bisect_patches(const CellCounts<D>& counts, int ranks, int min_cells) {
   long cells = 1;
   for (int d = 0; d < D; ++d) cells *= counts.cells[d];
   if (static_cast<long>(counts.points.size()) != cells)
     throw std::invalid_argument("cell counts do not match the grid's cells");
-  const bool uniform =
-      std::all_of(counts.points.begin(), counts.points.end(), [](long n) { return n == 0; });
-  std::vector<Patch<D>> patches;
-  bisect(counts, IVec<D>::Zero().eval(), counts.cells, ranks, 0, std::max(min_cells, 1), uniform,
-         patches);
-  return patches;
+  auto each_cell = [&](const std::function<void(const IVec<D>&, long)>& visit) {
+    IVec<D> cell = IVec<D>::Zero();
+    for (long n : counts.points) {
+      if (n != 0) visit(cell, n);
+      for (int d = 0; d < D && ++cell[d] == counts.cells[d]; ++d) cell[d] = 0;  // axis 0 fastest
+    }
+  };
+  return bisect_patches<D>(counts.cells, ranks, min_cells, each_cell, [](std::vector<long>&) {});
 }
 
 template <int D>
@@ -114,6 +183,10 @@ template struct CellCounts<2>;
 template struct CellCounts<3>;
 template std::vector<Patch<2>> bisect_patches<2>(const CellCounts<2>&, int, int);
 template std::vector<Patch<3>> bisect_patches<3>(const CellCounts<3>&, int, int);
+template std::vector<Patch<2>> bisect_patches<2>(const IVec<2>&, int, int, const CellVisits<2>&,
+                                                 const SumOverRanks&);
+template std::vector<Patch<3>> bisect_patches<3>(const IVec<3>&, int, int, const CellVisits<3>&,
+                                                 const SumOverRanks&);
 template double imbalance<2>(const std::vector<Patch<2>>&);
 template double imbalance<3>(const std::vector<Patch<3>>&);
 

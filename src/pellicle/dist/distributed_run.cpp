@@ -30,39 +30,18 @@ IVec<D> cell_of(const Grid<D>& grid, const Vec<D>& x) {
   return c;
 }
 
-//! Points per cell of the grid, none yet.
-template <int D>
-CellCounts<D> no_points(const Grid<D>& grid) {
-  CellCounts<D> counts{grid.cells(), {}};
-  long cells = 1;
-  for (int d = 0; d < D; ++d) cells *= grid.cells()[d];
-  counts.points.assign(cells, 0);
-  return counts;
-}
-
-//! Count a point at x in its cell.
-template <int D>
-void count_point(const Grid<D>& grid, const Vec<D>& x, CellCounts<D>& counts) {
-  const IVec<D> c = cell_of(grid, x);
-  long flat = c[D - 1];
-  for (int d = D - 2; d >= 0; --d) flat = flat * grid.cells()[d] + c[d];
-  ++counts.points[flat];
-}
-
-//! Points per cell of the grid (this rank's points).
-template <int D>
-CellCounts<D> count_points(const Grid<D>& grid, const std::vector<Vec<D>>& positions) {
-  CellCounts<D> counts = no_points(grid);
-  for (const auto& x : positions) count_point(grid, x, counts);
-  return counts;
-}
-
-template <int D>
-std::vector<Patch<D>> split(const CellCounts<D>& counts, int ranks) {
+//! Patches of the grid for `ranks` ranks, weighing the points visit_points(visit) gives
+//! (visit(x) for each), over the ranks that `sum` adds over.
+template <int D, class VisitPoints>
+std::vector<Patch<D>> split(const Grid<D>& grid, int ranks, VisitPoints&& visit_points,
+                            const SumOverRanks& sum) {
+  auto cells = [&](const std::function<void(const IVec<D>&, long)>& visit) {
+    visit_points([&](const Vec<D>& x) { visit(cell_of(grid, x), 1); });
+  };
   try {
     // Patches at least two ghost widths wide: a halo reaches only adjacent patches, and a
     // window that holds a ghost beyond a wall holds its mirror image too.
-    return bisect_patches(counts, ranks, 2 * Grid<D>::kGhost);
+    return bisect_patches<D>(grid.cells(), ranks, 2 * Grid<D>::kGhost, cells, sum);
   } catch (const std::invalid_argument& e) {
     throw SetupError(e.what());
   }
@@ -196,13 +175,17 @@ void PatchRun<D>::rebalance(Simulation<D>& simulation) {
   if (total[0] == 0) return;
   const double now = most * world_.size() / total[0] - 1.0;
   if (now <= limit) return;
-  // The whole run's points per cell, split anew; the points go to their new patches. A split
-  // that would not cut the imbalance by half the limit is not worth the move (a few points
-  // in few cells may not split any better).
+  // The whole run's points, split anew; the points go to their new patches. A split that
+  // would not cut the imbalance by half the limit is not worth the move (a few points in few
+  // cells may not split any better).
   const Grid<D>& grid = simulation.grid();
-  CellCounts<D> counts = count_points(grid, simulation.points().position);
-  world_.sum(counts.points);
-  std::vector<Patch<D>> patches = split(counts, world_.size());
+  const auto& positions = simulation.points().position;
+  std::vector<Patch<D>> patches = split(
+      grid, world_.size(),
+      [&](auto&& visit) {
+        for (const auto& x : positions) visit(x);
+      },
+      [&](std::vector<long>& counts) { world_.sum(counts); });
   if (imbalance(patches) > now - 0.5 * limit) return;
   Grid<D> window = window_of(grid, patches[world_.rank()], reach_);
   use_patches(std::move(patches), window);
@@ -248,10 +231,14 @@ PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> save
       else
         bodies[b].walk([&](const Vec<D>& x) { visit(k++, x); });
     };
-    CellCounts<D> counts = no_points(grid);
-    for (std::size_t b = 0; b < bodies.size(); ++b)
-      walk(b, [&](long, const Vec<D>& x) { count_point(grid, x, counts); });
-    patches = split(counts, world.size());
+    // Every rank walks every body: the split needs no sums over the ranks.
+    patches = split(
+        grid, world.size(),
+        [&](auto&& visit) {
+          for (std::size_t b = 0; b < bodies.size(); ++b)
+            walk(b, [&](long, const Vec<D>& x) { visit(x); });
+        },
+        [](std::vector<long>&) {});
     const std::vector<PatchBox<D>> boxes = patch_boxes(patches, grid);
     std::vector<std::vector<char>> keep(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b) {
@@ -275,9 +262,8 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
                      " node layers beyond a cell, more than the grid's ghost layers");
   Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
-  distribute_membrane_frames(world, points,
-                             points.columns.template find<double>(column_names::body_index),
-                             grid.cell());
+  distribute_membrane_frames(
+      world, points, points.columns.template find<double>(column_names::body_index), grid.cell());
   const WindowCarrier<D> carrier(grid, window, nullptr);
   simulation.use_grid_window(std::move(window), carrier);
   simulation.points_changed();
