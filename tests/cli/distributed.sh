@@ -52,6 +52,17 @@ awk -F, 'NR == FNR { t = $1; s = $2; e = $8; next }
          { exit !($1 == t && $2 == s && ($8 - e) ^ 2 <= (1e-9 * e) ^ 2) }' \
   "$work/last1" "$work/last2" || fail "a restart on two ranks ends elsewhere than on one"
 
+# A checkpoint written on three ranks, whose outer pieces hold no points of one disk each,
+# continues on one, two and three ranks to the same last row (each rank reads only the pieces
+# whose boxes meet its patch).
+run3=("$mpirun" -np 3 --oversubscribe "$pellicle" run --quiet)
+expect 0 "results" -- "${run3[@]}" "$cases/two_disks.toml" --out "$work/t3" "${short[@]}" \
+  --checkpoint-interval 0.15
+more3=(--set grid.cell=0.025 --set solver.end_time=0.6 --restart "$work/t3/checkpoint.h5")
+expect 0 "results" -- "$pellicle" run --quiet "$cases/two_disks.toml" --out "$work/t3on1" "${more3[@]}"
+expect 0 "results" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/t3on2" "${more3[@]}"
+expect 0 "results" -- "${run3[@]}" "$cases/two_disks.toml" --out "$work/t3on3" "${more3[@]}"
+
 # A checkpoint written on two ranks, after the disks met under contact-release (whose node
 # states it holds), continues on one and on three ranks as one process's own checkpoint does:
 # time and step exactly, every column of the last row to round-off.
@@ -71,6 +82,8 @@ same_last_row() {
     awk -F, '{ n = NF / 2; if ($1 != $(1 + n) || $2 != $(2 + n)) exit 1
                for (i = 3; i <= n; ++i) if (($i - $(i + n)) ^ 2 > (1e-9 * $i) ^ 2 + 1e-24) exit 1 }'
 }
+same_last_row "$work/t3on1" "$work/t3on2" || fail "a three-rank checkpoint continues elsewhere on two"
+same_last_row "$work/t3on1" "$work/t3on3" || fail "a three-rank checkpoint continues elsewhere on three"
 same_last_row "$work/c1on1" "$work/c2on1" || fail "a two-rank checkpoint continues elsewhere on one"
 same_last_row "$work/c1on1" "$work/c2on3" || fail "a two-rank checkpoint continues elsewhere on three"
 grep -q "contact_x" "$work/c2on3/history.csv" || fail "the contact run has no contact columns"

@@ -179,17 +179,23 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
 #ifdef PELLICLE_WITH_MPI
   std::vector<Patch<D>> patches;
   if (distributed) {
-    SavedPositions<D> positions;
+    SavedPoints<D> points;
     if (saved)
-      positions = [&o](const std::string& body) {
-        return checkpoint_positions<D>(o.restart, body);
-      };
-    select = patch_points<D>(*o.world, std::move(positions), patches);
+      points = {[&o](const std::string& body) { return checkpoint_points(o.restart, body); },
+                [&o](const std::string& body, const PartFilter<D>& read,
+                     const std::function<void(long, const Vec<D>&)>& visit) {
+                  for_each_saved_position<D>(o.restart, body, read, visit);
+                }};
+    select = patch_points<D>(*o.world, std::move(points), patches);
   }
 #endif
   auto simulation = build_simulation<D>(c, std::move(select));
   if (saved) {
-    for (const auto& name : restore_checkpoint<D>(o.restart, *simulation))
+    SavedPartFilter<D> read;  // a rank reads the pieces that can hold its points
+#ifdef PELLICLE_WITH_MPI
+    if (distributed) read = parts_near_patch(patches, simulation->grid(), world_rank(o));
+#endif
+    for (const auto& name : restore_checkpoint<D>(o.restart, *simulation, read))
       if (lead)
         std::fprintf(stderr, "restart   body '%s' is new: it starts from its case state\n",
                      name.c_str());

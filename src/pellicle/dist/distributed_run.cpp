@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "pellicle/core/error.hpp"
@@ -213,41 +214,66 @@ void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& o
 }
 
 template <int D>
-PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> saved,
+PointSelection<D> patch_points(const Communicator& world, SavedPoints<D> saved,
                                std::vector<Patch<D>>& patches) {
   return [&world, saved = std::move(saved), &patches](const Grid<D>& grid,
                                                       const std::vector<PlacedBody<D>>& bodies) {
-    // Each body's points where a checkpoint put them, else where they are built:
-    // visit(index in the body, position) for each in turn.
-    std::vector<std::vector<Vec<D>>> moved(bodies.size());
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-      auto at = saved ? saved(bodies[b].name) : std::nullopt;
-      if (at && static_cast<long>(at->size()) == bodies[b].count) moved[b] = std::move(*at);
-    }
-    auto walk = [&](std::size_t b, auto&& visit) {
-      long k = 0;
-      if (!moved[b].empty())
-        for (const auto& x : moved[b]) visit(k++, x);
-      else
-        bodies[b].walk([&](const Vec<D>& x) { visit(k++, x); });
+    const int me = world.rank(), ranks = world.size();
+    // The bodies the checkpoint holds (as many points as the case builds) continue from it.
+    std::vector<char> continued(bodies.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (saved.count) continued[b] = saved.count(bodies[b].name) == bodies[b].count;
+    // Each point weighed once over the ranks: rank 0 walks the bodies as built, each rank
+    // reads every ranks-th piece (rank 0 a checkpoint of one file).
+    const PartFilter<D> share = [&](long piece, const Vec<D>&, const Vec<D>&) {
+      return piece < 0 ? me == 0 : piece % ranks == me;
     };
-    // Every rank walks every body: the split needs no sums over the ranks.
     patches = split(
-        grid, world.size(),
+        grid, ranks,
         [&](auto&& visit) {
-          for (std::size_t b = 0; b < bodies.size(); ++b)
-            walk(b, [&](long, const Vec<D>& x) { visit(x); });
+          for (std::size_t b = 0; b < bodies.size(); ++b) {
+            if (continued[b])
+              saved.for_each(bodies[b].name, share, [&](long, const Vec<D>& x) { visit(x); });
+            else if (me == 0)
+              bodies[b].walk([&](const Vec<D>& x) { visit(x); });
+          }
         },
-        [](std::vector<long>&) {});
+        [&](std::vector<long>& counts) { world.sum(counts); });
     const std::vector<PatchBox<D>> boxes = patch_boxes(patches, grid);
     std::vector<std::vector<char>> keep(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-      keep[b].resize(bodies[b].count);
-      walk(b, [&](long k, const Vec<D>& x) {
-        keep[b][k] = owner_of(boxes, x, world.rank()) == world.rank();
-      });
+      keep[b].assign(bodies[b].count, 0);
+      auto mark = [&](long k, const Vec<D>& x) { keep[b][k] = owner_of(boxes, x, me) == me; };
+      if (continued[b]) {
+        saved.for_each(bodies[b].name, parts_near_patch(patches, grid, me), mark);
+      } else {
+        long k = 0;
+        bodies[b].walk([&](const Vec<D>& x) { mark(k++, x); });
+      }
     }
+    // Every point on exactly one rank.
+    std::vector<long> kept(bodies.size(), 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      kept[b] = std::count(keep[b].begin(), keep[b].end(), 1);
+    world.sum(kept);
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+      if (kept[b] != bodies[b].count)
+        throw std::logic_error("body '" + bodies[b].name + "': the ranks keep " +
+                               std::to_string(kept[b]) + " of its " +
+                               std::to_string(bodies[b].count) + " points");
     return keep;
+  };
+}
+
+template <int D>
+PartFilter<D> parts_near_patch(const std::vector<Patch<D>>& patches, const Grid<D>& grid,
+                               int rank) {
+  const PatchBox<D> mine = patch_boxes(patches, grid)[rank];
+  return [mine](long, const Vec<D>& lower, const Vec<D>& upper) {
+    // Half-open like PatchBox::contains; a comparison with a value not finite keeps it.
+    for (int d = 0; d < D; ++d)
+      if (upper[d] < mine.lower[d] || lower[d] >= mine.upper[d]) return false;
+    return true;
   };
 }
 
@@ -280,9 +306,11 @@ template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communicator&,
                                           std::vector<Patch<2>>);
 template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&,
                                           std::vector<Patch<3>>);
-template PointSelection<2> patch_points<2>(const Communicator&, SavedPositions<2>,
+template PointSelection<2> patch_points<2>(const Communicator&, SavedPoints<2>,
                                            std::vector<Patch<2>>&);
-template PointSelection<3> patch_points<3>(const Communicator&, SavedPositions<3>,
+template PointSelection<3> patch_points<3>(const Communicator&, SavedPoints<3>,
                                            std::vector<Patch<3>>&);
+template PartFilter<2> parts_near_patch<2>(const std::vector<Patch<2>>&, const Grid<2>&, int);
+template PartFilter<3> parts_near_patch<3>(const std::vector<Patch<3>>&, const Grid<3>&, int);
 
 }  // namespace pellicle

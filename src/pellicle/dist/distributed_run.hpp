@@ -89,19 +89,40 @@ class PatchRun final : public StepHook<D> {
   double exchange_seconds_ = 0.0;
 };
 
-//! Where the checkpoint a distributed run continues from put the points of the body of this
-//! name, in the order the body was built; none when it holds no such body.
+//! Which parts of a checkpoint to read: read(piece, lower, upper) for rank `piece`'s piece of
+//! a distributed run's checkpoint, whose points of a body lie within [lower, upper] (piece −1:
+//! a checkpoint of one file); io/checkpoint.hpp's SavedPartFilter.
 template <int D>
-using SavedPositions = std::function<std::optional<std::vector<Vec<D>>>(const std::string& body)>;
+using PartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
+
+//! The checkpoint a distributed run continues from: `count(body)` is the number of points it
+//! holds of the body of this name (none when it holds no such body); `for_each(body, read,
+//! visit)` calls visit(index in the body as built, position) for its points of the body in
+//! the parts `read` accepts.
+template <int D>
+struct SavedPoints {
+  std::function<std::optional<long>(const std::string& body)> count;
+  std::function<void(const std::string& body, const PartFilter<D>& read,
+                     const std::function<void(long, const Vec<D>&)>& visit)>
+      for_each;
+};
 
 //! The selection (SimulationBuilder::select_points) that builds only this rank's points: the
 //! patches are split by recursive bisection of the point counts of every body, at the places
-//! the bodies' points are built or, where `saved` gives them, where a checkpoint put them, and
-//! this rank keeps the points of its patch. The split goes to `patches`, for distribute. The
-//! selection throws SetupError when the grid is too small for that many patches.
+//! the bodies' points are built or, where `saved` holds them, where a checkpoint put them, and
+//! this rank keeps the points of its patch. Each point is weighed by one rank: rank 0 walks the
+//! bodies as built, each rank reads every size-th piece of the checkpoint; to keep its points
+//! a rank reads only the pieces whose boxes meet its patch. The split goes to `patches`, for
+//! distribute. The selection throws SetupError when the grid is too small for that many
+//! patches.
 template <int D>
-PointSelection<D> patch_points(const Communicator& world, SavedPositions<D> saved,
+PointSelection<D> patch_points(const Communicator& world, SavedPoints<D> saved,
                                std::vector<Patch<D>>& patches);
+
+//! The parts of a checkpoint that can hold points of rank `rank`'s patch: those whose box
+//! meets it (a part without a box, or with a point not finite, always).
+template <int D>
+PartFilter<D> parts_near_patch(const std::vector<Patch<D>>& patches, const Grid<D>& grid, int rank);
 
 //! Complete a simulation built with patch_points' selection over the ranks of `world`: this
 //! rank stores the grid window its patch's points reach and gets the PatchRun hook. Throws
@@ -116,9 +137,9 @@ extern template const PatchRun<2>& distribute<2>(Simulation<2>&, const Communica
                                                  std::vector<Patch<2>>);
 extern template const PatchRun<3>& distribute<3>(Simulation<3>&, const Communicator&,
                                                  std::vector<Patch<3>>);
-extern template PointSelection<2> patch_points<2>(const Communicator&, SavedPositions<2>,
+extern template PointSelection<2> patch_points<2>(const Communicator&, SavedPoints<2>,
                                                   std::vector<Patch<2>>&);
-extern template PointSelection<3> patch_points<3>(const Communicator&, SavedPositions<3>,
+extern template PointSelection<3> patch_points<3>(const Communicator&, SavedPoints<3>,
                                                   std::vector<Patch<3>>&);
 
 }  // namespace pellicle

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 #include "pellicle/core/error.hpp"
@@ -202,15 +203,30 @@ std::string body_group(hid_t bodies, const std::string& name) {
   return "";
 }
 
-//! The saved parts of the body whose group is `name`: in a checkpoint of one file its group,
-//! whose rows are the body's points in the order they were built (visit(group, {})); in a
-//! distributed run's, the group in each rank's piece with the index in the body of each of its
-//! rows (visit(group, indices)).
-template <class Visit>
-void for_each_part(hid_t index, const std::string& path, const std::string& name, Visit&& visit) {
+//! The box around a piece's points of a body (its `box` rows: lower, upper corner); the
+//! whole space for pieces written before pieces had boxes, and for a checkpoint of one file.
+template <int D>
+std::pair<Vec<D>, Vec<D>> saved_box(hid_t g) {
+  const double far = std::numeric_limits<double>::infinity();
+  if (g < 0 || H5Lexists(g, "box", H5P_DEFAULT) <= 0)
+    return {Vec<D>::Constant(-far), Vec<D>::Constant(far)};
+  const std::vector<double> box = read_vector(g, "box");
+  if (box.size() != 2 * D) throw std::runtime_error("a piece's box is not two corners");
+  return {Vec<D>(box.data()), Vec<D>(box.data() + D)};
+}
+
+//! The saved parts of the body whose group is `name` that `read` accepts: in a checkpoint of
+//! one file its group, whose rows are the body's points in the order they were built
+//! (visit(group, nullptr)); in a distributed run's, the group in each rank's piece with the
+//! index in the body of each of its rows (visit(group, &indices); a piece may hold none). read(piece, lower, upper) decides for
+//! piece k whose points lie within [lower, upper] (k = −1: the one file); empty: every part.
+template <int D, class Visit>
+void for_each_part(hid_t index, const std::string& path, const std::string& name,
+                   const SavedPartFilter<D>& read, Visit&& visit) {
   if (H5Aexists(index, "pieces") <= 0) {
     Handle bodies = group(index, "bodies", false);
-    visit(group(bodies, name, false), std::vector<double>{});
+    const auto [lower, upper] = saved_box<D>(-1);
+    if (!read || read(-1, lower, upper)) visit(group(bodies, name, false), nullptr);
     return;
   }
   const long pieces = read_number<long>(index, "pieces"), step = read_number<long>(index, "step");
@@ -224,8 +240,19 @@ void for_each_part(hid_t index, const std::string& path, const std::string& name
                                std::to_string(step) + ")");
     Handle bodies = group(file, "bodies", false);
     Handle g = group(bodies, name, false);
-    visit(g, read_vector(g, "body_index"));
+    const auto [lower, upper] = saved_box<D>(g);
+    if (read && !read(rank, lower, upper)) continue;
+    const std::vector<double> index_in_body = read_vector(g, "body_index");
+    visit(g, &index_in_body);
   }
+}
+
+//! The number of points the checkpoint holds of the body whose group is `name`.
+long saved_points(hid_t index, const std::string& name) {
+  Handle bodies = group(index, "bodies", false);
+  Handle g = group(bodies, name, false);
+  if (H5Aexists(index, "pieces") > 0) return read_number<long>(g, "points");
+  return static_cast<long>(read_vector(g, "mass").size());
 }
 
 }  // namespace
@@ -263,6 +290,15 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
           write_text(g, "name", body.name);
           Handle columns = group(g, "columns", true);
           write_array(g, "body_index", p[built].data() + body.begin, body.count(), 1);
+          // The box around these points: a continued run's ranks read only the pieces
+          // whose boxes meet their patches.
+          Vec<D> lower = Vec<D>::Constant(std::numeric_limits<double>::infinity());
+          Vec<D> upper = -lower;
+          for (long q = body.begin; q < body.end; ++q)
+            lower = lower.cwiseMin(p.position[q]), upper = upper.cwiseMax(p.position[q]);
+          std::vector<double> corners(lower.data(), lower.data() + D);
+          corners.insert(corners.end(), upper.data(), upper.data() + D);
+          write_array(g, "box", corners.data(), 2, D);
           for_each_point_array<D>(p, body.begin,
                                   [&](const std::string& name, const double* data, int k) {
                                     write_array(g, name, data, body.count(), k);
@@ -354,7 +390,8 @@ CheckpointHeader read_checkpoint_header(const std::string& path) {
 }
 
 template <int D>
-std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& s) {
+std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& s,
+                                            const SavedPartFilter<D>& read) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const SourceLocation where{path, 0, 0};
   std::vector<std::string> added;
@@ -370,13 +407,20 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
         added.push_back(body.name);
         continue;
       }
-      long rows_saved = 0;
-      for_each_part(file, path, found, [&](hid_t g, const std::vector<double>& index) {
-        const long rows = index.empty() ? body.built : static_cast<long>(index.size());
-        rows_saved += rows;
+      const long rows_saved = saved_points(file, found);
+      if (rows_saved != body.built)
+        throw InputError(where, "--restart",
+                         "body '" + body.name + "': the checkpoint holds " +
+                             std::to_string(rows_saved) + " points, the case builds " +
+                             std::to_string(body.built));
+      long restored = 0;  // this process's points found in the parts read
+      for_each_part<D>(file, path, found, read, [&](hid_t g, const std::vector<double>* index) {
+        const long rows = index ? static_cast<long>(index->size()) : body.built;
         std::vector<long> target(rows);  // this process's point of each row, or −1
-        for (long r = 0; r < rows; ++r)
-          target[r] = point_of(p, built, body, index.empty() ? r : static_cast<long>(index[r]));
+        for (long r = 0; r < rows; ++r) {
+          target[r] = point_of(p, built, body, index ? static_cast<long>((*index)[r]) : r);
+          restored += target[r] >= 0;
+        }
         std::vector<double> values;
         for_each_point_array<D>(p, body.begin, [&](const std::string& name, double* data, int k) {
           values.resize(rows * k);
@@ -389,11 +433,10 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
               std::copy_n(values.data() + r * k, k, data + (target[r] - body.begin) * k);
         });
       });
-      if (rows_saved != body.built)
-        throw InputError(where, "--restart",
-                         "body '" + body.name + "': the checkpoint holds " +
-                             std::to_string(rows_saved) + " points, the case builds " +
-                             std::to_string(body.built));
+      if (restored != body.count())
+        throw std::logic_error("body '" + body.name + "': " + std::to_string(restored) + " of " +
+                               std::to_string(body.count()) +
+                               " points of this process found in the checkpoint's parts read");
     }
     for (auto& hook : s.hooks()) {
       const std::string name = hook->state_name();
@@ -417,26 +460,35 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
   return added;
 }
 
-template <int D>
-std::optional<std::vector<Vec<D>>> checkpoint_positions(const std::string& path,
-                                                        const std::string& body) {
+std::optional<long> checkpoint_points(const std::string& path, const std::string& body) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   try {
     Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
     Handle bodies = group(file, "bodies", false);
     const std::string found = body_group(bodies, body);
     if (found.empty()) return std::nullopt;
-    std::vector<Vec<D>> positions;
-    for_each_part(file, path, found, [&](hid_t g, const std::vector<double>& index) {
+    return saved_points(file, found);
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
+  }
+}
+
+template <int D>
+void for_each_saved_position(const std::string& path, const std::string& body,
+                             const SavedPartFilter<D>& read,
+                             const std::function<void(long, const Vec<D>&)>& visit) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try {
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
+    Handle bodies = group(file, "bodies", false);
+    const std::string found = body_group(bodies, body);
+    if (found.empty()) return;
+    for_each_part<D>(file, path, found, read, [&](hid_t g, const std::vector<double>* index) {
       const std::vector<double> values = read_vector(g, "position");
       const long rows = static_cast<long>(values.size()) / D;
-      for (long r = 0; r < rows; ++r) {
-        const long i = index.empty() ? r : static_cast<long>(index[r]);
-        if (i >= static_cast<long>(positions.size())) positions.resize(i + 1);
-        positions[i] = Vec<D>(values.data() + D * r);
-      }
+      for (long r = 0; r < rows; ++r)
+        visit(index ? static_cast<long>((*index)[r]) : r, Vec<D>(values.data() + D * r));
     });
-    return positions;
   } catch (const std::runtime_error& e) {
     throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
   }
@@ -446,11 +498,15 @@ template void write_checkpoint<2>(const std::string&, const Simulation<2>&, cons
                                   const NodeCarrier*);
 template void write_checkpoint<3>(const std::string&, const Simulation<3>&, const CheckpointHeader&,
                                   const NodeCarrier*);
-template std::vector<std::string> restore_checkpoint<2>(const std::string&, Simulation<2>&);
-template std::vector<std::string> restore_checkpoint<3>(const std::string&, Simulation<3>&);
-template std::optional<std::vector<Vec<2>>> checkpoint_positions<2>(const std::string&,
-                                                                    const std::string&);
-template std::optional<std::vector<Vec<3>>> checkpoint_positions<3>(const std::string&,
-                                                                    const std::string&);
+template std::vector<std::string> restore_checkpoint<2>(const std::string&, Simulation<2>&,
+                                                        const SavedPartFilter<2>&);
+template std::vector<std::string> restore_checkpoint<3>(const std::string&, Simulation<3>&,
+                                                        const SavedPartFilter<3>&);
+template void for_each_saved_position<2>(const std::string&, const std::string&,
+                                         const SavedPartFilter<2>&,
+                                         const std::function<void(long, const Vec<2>&)>&);
+template void for_each_saved_position<3>(const std::string&, const std::string&,
+                                         const SavedPartFilter<3>&,
+                                         const std::function<void(long, const Vec<3>&)>&);
 
 }  // namespace pellicle

@@ -11,11 +11,13 @@
 //! A distributed run's checkpoint is this file without the bodies' point datasets (each body
 //! group has attribute `points`, its point count as built, and the file attribute `pieces`
 //! the number of ranks), beside one piece per rank, checkpoint_rNNNN.h5 (attributes format,
-//! step, rank): /bodies/body_N with the rank's points of the body, their datasets as above
-//! and `body_index`, each point's index in its body as built.
+//! step, rank): /bodies/body_N with the rank's points of the body, their datasets as above,
+//! `body_index`, each point's index in its body as built, and `box`, the lower and upper
+//! corners of the box around them.
 //! The frame estimators draw their random points from a generator seeded per cell, so the
 //! run has no random state beyond the seed recorded in `rng`.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,21 +49,36 @@ void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
 //! Read the header. Throws InputError naming the file when it is not a Pellicle checkpoint.
 CheckpointHeader read_checkpoint_header(const std::string& path);
 
+//! Which saved parts of a body a process reads: read(piece, lower, upper) for rank `piece`'s
+//! piece of a distributed run's checkpoint, whose points of the body lie within
+//! [lower, upper] (the whole space for pieces written without their box), or piece −1 for a
+//! checkpoint of one file. True: read it. An empty filter reads every part.
+template <int D>
+using SavedPartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
+
 //! Continue `simulation` (built from the case, possibly changed) from the checkpoint: every
 //! body found in it by name takes its saved points (the point count must match; a body built
 //! in part, as a distributed run's rank builds it, takes the rows of its points' indices in the
 //! body, column_names::body_index), the clock and the hooks' state are restored. Returns the names
 //! of bodies the checkpoint does not hold (added by the changed case; they start from their case
 //! state). Throws InputError for a body whose point count changed or a declared column the
-//! checkpoint lacks.
+//! checkpoint lacks. `read`: the parts that can hold this process's points (a rank of a
+//! distributed run: the pieces whose boxes meet its patch); std::logic_error when a point of
+//! the process is in none of them.
 template <int D>
-std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& simulation);
+std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& simulation,
+                                            const SavedPartFilter<D>& read = {});
 
-//! The positions the checkpoint holds for the body of this name, in the order the body was
-//! built; none when it holds no such body. Throws InputError naming the file when it cannot
-//! be read.
+//! The number of points the checkpoint holds of the body of this name; none when it holds no
+//! such body. Throws InputError naming the file when it cannot be read.
+std::optional<long> checkpoint_points(const std::string& path, const std::string& body);
+
+//! visit(index in the body as built, position) for each point the checkpoint holds of the
+//! body of this name in the parts `read` accepts (nothing when it holds no such body). Throws
+//! InputError naming the file when it cannot be read.
 template <int D>
-std::optional<std::vector<Vec<D>>> checkpoint_positions(const std::string& path,
-                                                        const std::string& body);
+void for_each_saved_position(const std::string& path, const std::string& body,
+                             const SavedPartFilter<D>& read,
+                             const std::function<void(long, const Vec<D>&)>& visit);
 
 }  // namespace pellicle
