@@ -199,14 +199,21 @@ void PatchRun<D>::rebalance(Simulation<D>& simulation) {
 
 template <int D>
 void PatchRun<D>::summary_figures(std::vector<std::pair<std::string, double>>& out) const {
+  long frame_doubles = 0, gathered = 0;
+  for (const auto* frames : frames_)
+    frame_doubles += frames->doubles_sent(), gathered += frames->gathered_estimates();
   std::vector<double> sums = {static_cast<double>(doubles_sent_), static_cast<double>(migrated_),
-                              static_cast<double>(points_)};
+                              static_cast<double>(points_), static_cast<double>(frame_doubles)};
   world_.sum_in_rank_order(sums);
   const double steps = std::max<long>(steps_, 1);
   out.emplace_back("distributed.halo_bytes_per_step", sums[0] * sizeof(double) / steps);
   out.emplace_back("distributed.exchange_seconds_per_step", world_.max(exchange_seconds_ / steps));
   out.emplace_back("distributed.migrated_points", sums[1]);
   out.emplace_back("distributed.rebalances", rebalances_);
+  if (!frames_.empty()) {
+    out.emplace_back("distributed.frames_bytes_per_step", sums[3] * sizeof(double) / steps);
+    out.emplace_back("distributed.frames_gathered", gathered);
+  }
   out.emplace_back("distributed.start_imbalance", start_imbalance_);
   const double most = world_.max(static_cast<double>(points_));
   out.emplace_back("distributed.imbalance",
@@ -288,8 +295,8 @@ const PatchRun<D>& distribute(Simulation<D>& simulation, const Communicator& wor
                      " node layers beyond a cell, more than the grid's ghost layers");
   Grid<D> window = window_of(grid, patches[world.rank()], reach);
   auto hook = std::make_unique<PatchRun<D>>(world, std::move(patches), window, reach);
-  distribute_membrane_frames(
-      world, points, points.columns.template find<double>(column_names::body_index), grid.cell());
+  hook->watch_frames(distribute_membrane_frames(
+      world, points, points.columns.template find<double>(column_names::body_index), grid.cell()));
   const WindowCarrier<D> carrier(grid, window, nullptr);
   simulation.use_grid_window(std::move(window), carrier);
   simulation.points_changed();

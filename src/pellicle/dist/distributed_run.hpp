@@ -17,6 +17,7 @@
 
 #include "pellicle/dist/communicator.hpp"
 #include "pellicle/dist/decomposition.hpp"
+#include "pellicle/dist/halo_frames.hpp"
 #include "pellicle/dist/halo_sums.hpp"
 #include "pellicle/dist/migration.hpp"
 #include "pellicle/mpm/builder.hpp"
@@ -60,9 +61,13 @@ class PatchRun final : public StepHook<D> {
   //! distributed.halo_bytes_per_step (all ranks' node and cell shares sent, per step),
   //! distributed.exchange_seconds_per_step (the slowest rank's time in halo sums and
   //! migration, waiting included), distributed.migrated_points (over the run) and
-  //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now) and
-  //! distributed.rebalances.
+  //! distributed.imbalance (max / mean − 1 of the ranks' points, at the start and now),
+  //! distributed.rebalances, and for membranes distributed.frames_bytes_per_step (all ranks'
+  //! points sent for membrane frames, halo or whole body, per step) and
+  //! distributed.frames_gathered (estimates made on a whole body gathered, per body).
   void summary_figures(std::vector<std::pair<std::string, double>>& out) const override;
+  //! The membrane bodies' frame estimators, for their figures.
+  void watch_frames(std::vector<const HaloFrames<D>*> frames) { frames_ = std::move(frames); }
 
   const std::vector<Patch<D>>& patches() const { return patches_; }
   //! The rank whose patch holds x (a patch at the domain's side reaches past it).
@@ -87,6 +92,7 @@ class PatchRun final : public StepHook<D> {
   long points_ = 0;  //!< this rank's, after the last step
   long steps_ = 0, doubles_sent_ = 0, migrated_ = 0, rebalances_ = 0;
   double exchange_seconds_ = 0.0;
+  std::vector<const HaloFrames<D>*> frames_;
 };
 
 //! Which parts of a checkpoint to read: read(piece, lower, upper) for rank `piece`'s piece of

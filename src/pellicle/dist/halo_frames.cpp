@@ -110,6 +110,7 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
       to_rank[r].insert(to_rank[r].end(), normal[p].data(), normal[p].data() + D);
     }
   }
+  for (const auto& out : to_rank) doubles_sent_ += static_cast<long>(out.size());
   world_.neighbour_all_to_all(to_rank, from_rank, neighbours);
 
   // The part: this rank's points and the halo, in generation order.
@@ -177,6 +178,7 @@ void HaloFrames<D>::from_whole_body(const std::vector<Vec<D>>& position, long be
       out.insert(out.end(), v->data(), v->data() + D);
   };
   const std::vector<double> all = body_as_built(points_, begin, end, 3 * D, append, &world_);
+  doubles_sent_ += (end - begin) * (1 + 3 * D) * (world_.size() - 1);
   if (static_cast<long>(all.size()) != count_ * 3 * D)
     throw std::logic_error("a membrane body's points on all ranks are " +
                            std::to_string(all.size() / (3 * D)) + ", not its " +
@@ -199,19 +201,27 @@ void HaloFrames<D>::from_whole_body(const std::vector<Vec<D>>& position, long be
 }
 
 template <int D>
-void distribute_membrane_frames(const Communicator& world, Particles<D>& points,
-                                Column<double> index, double cell) {
+std::vector<const HaloFrames<D>*> distribute_membrane_frames(const Communicator& world,
+                                                             Particles<D>& points,
+                                                             Column<double> index, double cell) {
+  std::vector<const HaloFrames<D>*> made;
   for (auto& body : points.bodies)
-    if (body.frames)
-      body.frames =
+    if (body.frames) {
+      auto frames =
           std::make_shared<HaloFrames<D>>(world, body.frames, points, index, body.built, cell);
+      made.push_back(frames.get());
+      body.frames = std::move(frames);
+    }
+  return made;
 }
 
 template class HaloFrames<2>;
 template class HaloFrames<3>;
-template void distribute_membrane_frames<2>(const Communicator&, Particles<2>&, Column<double>,
-                                            double);
-template void distribute_membrane_frames<3>(const Communicator&, Particles<3>&, Column<double>,
-                                            double);
+template std::vector<const HaloFrames<2>*> distribute_membrane_frames<2>(const Communicator&,
+                                                                         Particles<2>&,
+                                                                         Column<double>, double);
+template std::vector<const HaloFrames<3>*> distribute_membrane_frames<3>(const Communicator&,
+                                                                         Particles<3>&,
+                                                                         Column<double>, double);
 
 }  // namespace pellicle

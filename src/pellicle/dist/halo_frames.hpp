@@ -37,6 +37,8 @@ class HaloFrames final : public FrameEstimator<D> {
   //! Estimates so far from a halo and from the whole body gathered (for tests and reports).
   long halo_estimates() const { return halo_estimates_; }
   long gathered_estimates() const { return gathered_estimates_; }
+  //! Doubles this rank has sent for them: halo records, or its points to every other rank.
+  long doubles_sent() const { return doubles_sent_; }
 
  private:
   const Communicator& world_;
@@ -45,7 +47,7 @@ class HaloFrames final : public FrameEstimator<D> {
   Column<double> index_;
   long count_;
   double cell_;
-  long halo_estimates_ = 0, gathered_estimates_ = 0;
+  long halo_estimates_ = 0, gathered_estimates_ = 0, doubles_sent_ = 0;
   std::vector<Vec<D>> position_, normal_, tangent_;  //!< the part or the whole body, in order
   //! This rank's points' indices in the body when last sorted, and their order by index.
   std::vector<double> own_index_;
@@ -59,16 +61,21 @@ class HaloFrames final : public FrameEstimator<D> {
 };
 
 //! Give every membrane body of `points` (`index` its column_names::body_index) a HaloFrames
-//! estimator around its own; `cell` is the grid's.
+//! estimator around its own; `cell` is the grid's. Returns them.
 template <int D>
-void distribute_membrane_frames(const Communicator& world, Particles<D>& points,
-                                Column<double> index, double cell);
+std::vector<const HaloFrames<D>*> distribute_membrane_frames(const Communicator& world,
+                                                             Particles<D>& points,
+                                                             Column<double> index, double cell);
 
 extern template class HaloFrames<2>;
 extern template class HaloFrames<3>;
-extern template void distribute_membrane_frames<2>(const Communicator&, Particles<2>&,
-                                                   Column<double>, double);
-extern template void distribute_membrane_frames<3>(const Communicator&, Particles<3>&,
-                                                   Column<double>, double);
+extern template std::vector<const HaloFrames<2>*> distribute_membrane_frames<2>(const Communicator&,
+                                                                                Particles<2>&,
+                                                                                Column<double>,
+                                                                                double);
+extern template std::vector<const HaloFrames<3>*> distribute_membrane_frames<3>(const Communicator&,
+                                                                                Particles<3>&,
+                                                                                Column<double>,
+                                                                                double);
 
 }  // namespace pellicle
