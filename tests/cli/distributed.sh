@@ -110,6 +110,11 @@ expect 0 "results" -- "$pellicle" run --quiet "$cases/pendulum.toml" --out "$wor
 expect 0 "results" -- "${run2[@]}" "$cases/pendulum.toml" --out "$work/p2" "${swing[@]}"
 [ "$(head -1 "$work/p2/history.csv")" = "$(head -1 "$work/p1/history.csv")" ] ||
   fail "pendulum history columns differ from one process"
+# Its string's frames came from a halo but the first, from the whole string gathered.
+grep -q '"distributed.frames_gathered": 1,' "$work/p2/summary.json" ||
+  fail "the pendulum's frames were gathered more than once"
+grep -q '"distributed.frames_bytes_per_step": ' "$work/p2/summary.json" ||
+  fail "no membrane frame figures"
 paste -d, <(tail -1 "$work/p1/history.csv") <(tail -1 "$work/p2/history.csv") |
   awk -F, '{ n = NF / 2; for (i = n - 2; i <= n; ++i) if (($i - $(i + n)) ^ 2 > (1e-9 * $i) ^ 2) exit 1 }' ||
   fail "pendulum probes on two ranks differ from one process"
