@@ -85,18 +85,19 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
   const std::vector<double> all = world_.all_gather(mine);
   const int ranks = world_.size(), me = world_.rank();
   auto summary = [&](int r) { return Summary{all.data() + r * Summary::width}; };
-  BodyPart part;
-  part.count = count_;
+  part_.count = count_;
+  part_.planes = 0;
   for (int r = 0; r < ranks; ++r) {
     if (summary(r).unset()) return false;  // first signs again, from the whole body
-    part.planes |= summary(r).planes();
+    part_.planes |= summary(r).planes();
   }
 
   // To each rank, this rank's points within reach + 1 cells of its box: a superset of the
   // points in the cells within `reach` of a cell of its points.
   const double margin = (reach + 1) * cell_;
   const std::vector<double>& index = points_[index_];
-  std::vector<std::vector<double>> to_rank(ranks), from_rank;
+  to_rank_.resize(ranks);
+  for (auto& out : to_rank_) out.clear();
   std::vector<int> neighbours;
   for (int r = 0; r < ranks; ++r) {
     if (r == me) continue;
@@ -105,20 +106,15 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
     if (!send) continue;
     for (long p = begin; p < end; ++p) {
       if (!summary(r).near(position[p], margin)) continue;
-      to_rank[r].push_back(index[p]);
-      to_rank[r].insert(to_rank[r].end(), position[p].data(), position[p].data() + D);
-      to_rank[r].insert(to_rank[r].end(), normal[p].data(), normal[p].data() + D);
+      to_rank_[r].push_back(index[p]);
+      to_rank_[r].insert(to_rank_[r].end(), position[p].data(), position[p].data() + D);
+      to_rank_[r].insert(to_rank_[r].end(), normal[p].data(), normal[p].data() + D);
     }
   }
-  for (const auto& out : to_rank) doubles_sent_ += static_cast<long>(out.size());
-  world_.neighbour_all_to_all(to_rank, from_rank, neighbours);
+  for (const auto& out : to_rank_) doubles_sent_ += static_cast<long>(out.size());
+  world_.neighbour_all_to_all(to_rank_, from_rank_, neighbours);
 
   // The part: this rank's points and the halo, in generation order.
-  struct Entry {
-    long index;
-    long own;              //!< this rank's point, or −1
-    const double* record;  //!< the halo record (position, normal), or null
-  };
   auto by_index = [](const Entry& a, const Entry& b) { return a.index < b.index; };
   // This rank's points in order, sorted anew only when migration has changed them.
   if (!std::equal(index.begin() + begin, index.begin() + end, own_index_.begin(),
@@ -129,26 +125,26 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
     std::sort(own_order_.begin(), own_order_.end(),
               [&](long a, long b) { return own_index_[a] < own_index_[b]; });
   }
-  std::vector<Entry> own, halo, entries;
-  own.reserve(end - begin);
-  for (long k : own_order_) own.push_back({static_cast<long>(own_index_[k]), begin + k, nullptr});
-  for (const auto& from : from_rank)
+  own_.clear();
+  halo_.clear();
+  entries_.clear();
+  for (long k : own_order_) own_.push_back({static_cast<long>(own_index_[k]), begin + k, nullptr});
+  for (const auto& from : from_rank_)
     for (std::size_t k = 0; k < from.size(); k += 1 + 2 * D)
-      halo.push_back({static_cast<long>(from[k]), -1, from.data() + k + 1});
-  std::sort(halo.begin(), halo.end(), by_index);
-  entries.reserve(own.size() + halo.size());
-  std::merge(own.begin(), own.end(), halo.begin(), halo.end(), std::back_inserter(entries),
+      halo_.push_back({static_cast<long>(from[k]), -1, from.data() + k + 1});
+  std::sort(halo_.begin(), halo_.end(), by_index);
+  std::merge(own_.begin(), own_.end(), halo_.begin(), halo_.end(), std::back_inserter(entries_),
              by_index);
-  const std::size_t n = entries.size();
-  part.index.resize(n);
-  part.wanted.resize(n);
+  const std::size_t n = entries_.size();
+  part_.index.resize(n);
+  part_.wanted.resize(n);
   position_.resize(n);
   normal_.resize(n);
   tangent_.resize(n);
   for (std::size_t j = 0; j < n; ++j) {
-    const Entry& e = entries[j];
-    part.index[j] = e.index;
-    part.wanted[j] = e.own >= 0;
+    const Entry& e = entries_[j];
+    part_.index[j] = e.index;
+    part_.wanted[j] = e.own >= 0;
     if (e.own >= 0) {
       position_[j] = position[e.own];
       normal_[j] = normal[e.own];
@@ -159,12 +155,12 @@ bool HaloFrames<D>::from_halo(const std::vector<Vec<D>>& position, long begin, l
       tangent_[j].setZero();
     }
   }
-  const bool complete = n == 0 || whole_->estimate_part(part, position_, normal_, tangent_);
+  const bool complete = n == 0 || whole_->estimate_part(part_, position_, normal_, tangent_);
   if (world_.max(complete ? 0.0 : 1.0) > 0.0) return false;
   for (std::size_t j = 0; j < n; ++j) {
-    if (entries[j].own < 0) continue;
-    normal[entries[j].own] = normal_[j];
-    tangent[entries[j].own] = tangent_[j];
+    if (entries_[j].own < 0) continue;
+    normal[entries_[j].own] = normal_[j];
+    tangent[entries_[j].own] = tangent_[j];
   }
   return true;
 }

@@ -49,6 +49,16 @@ class HaloFrames final : public FrameEstimator<D> {
   double cell_;
   long halo_estimates_ = 0, gathered_estimates_ = 0, doubles_sent_ = 0;
   std::vector<Vec<D>> position_, normal_, tangent_;  //!< the part or the whole body, in order
+  //! A point of the part: this rank's point `own`, or (own −1) a halo record (position,
+  //! normal) from another rank.
+  struct Entry {
+    long index;  //!< in the body as built
+    long own;
+    const double* record;
+  };
+  std::vector<Entry> own_, halo_, entries_;  //!< work arrays of a halo estimate, kept
+  BodyPart part_;
+  std::vector<std::vector<double>> to_rank_, from_rank_;
   //! This rank's points' indices in the body when last sorted, and their order by index.
   std::vector<double> own_index_;
   std::vector<long> own_order_;
