@@ -139,6 +139,12 @@ expect 2 "cannot split 4 x 4 cells among 2 ranks" -- \
 expect 3 "CFL number c dt / h" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/fail" \
   --set solver.cfl=0.9 --set solver.cfl_limit=0.1
 grep -q '^failed' "$work/fail/status" || fail "status of a failed distributed run is not 'failed'"
+# The same on three ranks, one of which holds no points (the block lies in the others'
+# patches): it stops with exit 3 too, and only the ranks holding the fastest point name one.
+for attempt in 1 2 3; do
+  expect 3 "CFL number c dt / h" -- "$mpirun" -np 3 --oversubscribe "$pellicle" run --quiet \
+    "$(dirname "$0")/unstable.toml" --out "$work/empty$attempt"
+done
 # A failing point is named as one process names it (its index in the body as built).
 unstable=(--set solver.dt=0.01 --set solver.cfl_limit=1000)
 expect 3 "body 'left-bar', point 16: the point left the grid domain" -- \

@@ -159,7 +159,8 @@ double Simulation<D>::time_step() {
   // The materials stage of the last step measured it while updating the points.
   double wave = settled_wave_speed_ ? *settled_wave_speed_ : local_max_wave_speed();
   settled_wave_speed_.reset();
-  if (collective_) {  // one reduction for both speeds
+  const double own_wave = wave, own_speed = max_speed_;  // this process's points'
+  if (collective_) {                                     // one reduction for both speeds
     std::vector<double> speeds{wave, max_speed_};
     collective_->max(speeds);
     wave = speeds[0], max_speed_ = speeds[1];
@@ -182,7 +183,10 @@ double Simulation<D>::time_step() {
       what << "this point moves " << transport
            << " cells per step (|v| dt / h > solver.cfl_limit = " << settings_.cfl_limit
            << ", dt = " << dt << "); reduce solver.dt or use solver.cfl";
-    fail(fastest_point(waves), what.str());
+    // Every rank of a distributed run finds the step too long; the ranks holding the fastest
+    // point name it, the others (a rank may hold no points at all) name none.
+    const bool here = waves ? own_wave >= wave : own_speed >= max_speed_;
+    fail(here ? fastest_point(waves) : -1, what.str());
   }
   return dt;
 }
@@ -436,7 +440,7 @@ double Simulation<D>::planned_dt() const {
 
 template <int D>
 long Simulation<D>::fastest_point(bool waves) const {
-  long fastest = 0;
+  long fastest = -1;
   double top = -1.0;
   for (const auto& body : points_.bodies) {
     if (waves) {  // point by point (a failure is rare; the step asks per body)

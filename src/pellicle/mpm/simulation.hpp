@@ -183,7 +183,8 @@ class Simulation final : private Stages {
   //! Each body's check from its blocks' (materials stage), and the fluids' thinning warning.
   void check_materials();
   double time_step(double signal_speed) const;
-  //! The point with the largest wave speed (waves) or point speed (otherwise), for failures.
+  //! The point with the largest wave speed (waves) or point speed (otherwise), for failures;
+  //! −1 when this process holds no points.
   long fastest_point(bool waves) const;
   [[noreturn]] void fail(long point, const std::string& what) const;
   //! Hooks' after_scatter, then the centre-of-mass sums of per-body fields.
