@@ -141,7 +141,7 @@ expect 3 "CFL number c dt / h" -- "${run2[@]}" "$cases/two_disks.toml" --out "$w
 grep -q '^failed' "$work/fail/status" || fail "status of a failed distributed run is not 'failed'"
 # The same on three ranks, one of which holds no points (the block lies in the others'
 # patches): it stops with exit 3 too, and only the ranks holding the fastest point name one.
-for attempt in 1 2 3; do
+for attempt in 1 2 3 4 5 6; do  # the crash was a race: about one run in six
   expect 3 "CFL number c dt / h" -- "$mpirun" -np 3 --oversubscribe "$pellicle" run --quiet \
     "$(dirname "$0")/unstable.toml" --out "$work/empty$attempt"
 done
