@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "pellicle/core/error.hpp"
 #include "pellicle/dist/distributed_run.hpp"
 #include "pellicle/dist/halo_frames.hpp"
 #include "pellicle/validation/support.hpp"
@@ -289,6 +290,40 @@ TEST(DistributedRun, GasInAQuarterCircleMembraneAgreesWithOneProcess) {
   const Agreement a = compare_runs<2>("fsi_quarter_circle.toml", {}, 2000);
   expect_agreement(a);
   expect_halo_frames(a);
+}
+
+TEST(DistributedRun, AStepTooLongStopsEveryRankAndOnlyRanksWithTheFastestPointNameOne) {
+  // One small block in a 10 × 10 grid: on three ranks the lowest patch holds no points. The
+  // CFL check fails on every rank after the speeds' reduction; a rank without points must
+  // name no point (it once read point 0 of nothing and crashed).
+  const std::vector<std::string> overrides = {
+      "grid.cell=0.1", "solver.cfl=0.9", "solver.cfl_limit=0.1",
+      "body=[{name=\"block\", material=\"elastic\", points_per_cell=2, "
+      "region={shape=\"box\", lower=[0.6, 0.4], upper=[0.8, 0.6]}}]"};
+  std::vector<Patch<2>> patches;
+  auto split = validation::builtin_simulation<2>("two_disks.toml", overrides,
+                                                 patch_points<2>(*world, {}, patches));
+  distribute(*split, *world, std::move(patches));
+  const long points = split->point_count();
+  try {
+    split->step();
+    ADD_FAILURE() << "the step did not fail";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("CFL number"), std::string::npos) << e.what();
+    // Every point has the same wave speed: every rank with points holds a fastest one.
+    if (points == 0) {
+      EXPECT_EQ(e.context().point, -1);
+      EXPECT_EQ(e.context().body, "");
+    } else {
+      EXPECT_GE(e.context().point, 0);
+      EXPECT_EQ(e.context().body, "block");
+    }
+  }
+  std::vector<long> empty = {points == 0 ? 1L : 0L};
+  world->sum(empty);
+  if (world->size() == 3) {
+    EXPECT_GE(empty[0], 1) << "no rank without points: the test tests nothing";
+  }
 }
 
 TEST(DistributedRun, BreathingSphereAgreesWithOneProcess) {
