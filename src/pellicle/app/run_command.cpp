@@ -191,7 +191,7 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
 #endif
   auto simulation = build_simulation<D>(c, std::move(select));
   if (saved) {
-    SavedPartFilter<D> read;  // a rank reads the pieces that can hold its points
+    PartFilter<D> read;  // a rank reads the pieces that can hold its points
 #ifdef PELLICLE_WITH_MPI
     if (distributed) read = parts_near_patch(patches, simulation->grid(), world_rank(o));
 #endif

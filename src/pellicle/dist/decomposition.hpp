@@ -59,6 +59,14 @@ std::vector<Patch<D>> bisect_patches(const IVec<D>& cells, int ranks, int min_ce
 template <int D>
 std::vector<Patch<D>> bisect_patches(const CellCounts<D>& counts, int ranks, int min_cells);
 
+//! Which saved parts of a body a process reads when it continues a checkpoint:
+//! read(piece, lower, upper) for rank `piece`'s piece of a distributed run's checkpoint, whose
+//! points of the body lie within [lower, upper] (the whole space for pieces written without
+//! their box), or piece −1 for a checkpoint of one file. True: read it. An empty filter reads
+//! every part (io/checkpoint.hpp).
+template <int D>
+using PartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
+
 //! max / mean of the patches' point counts, minus 1: 0 is perfect balance; a run rebalances
 //! when this exceeds its limit.
 template <int D>

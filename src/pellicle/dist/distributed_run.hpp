@@ -95,12 +95,6 @@ class PatchRun final : public StepHook<D> {
   std::vector<const HaloFrames<D>*> frames_;
 };
 
-//! Which parts of a checkpoint to read: read(piece, lower, upper) for rank `piece`'s piece of
-//! a distributed run's checkpoint, whose points of a body lie within [lower, upper] (piece −1:
-//! a checkpoint of one file); io/checkpoint.hpp's SavedPartFilter.
-template <int D>
-using PartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
-
 //! The checkpoint a distributed run continues from: `count(body)` is the number of points it
 //! holds of the body of this name (none when it holds no such body); `for_each(body, read,
 //! visit)` calls visit(index in the body as built, position) for its points of the body in

@@ -106,6 +106,13 @@ bool read_array(hid_t parent, const std::string& name, double* data, long rows, 
   return true;
 }
 
+//! The values a dataset holds (rows × columns), without reading them.
+long dataset_values(hid_t parent, const std::string& name) {
+  Handle set(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
+  Handle space(H5Dget_space(set), H5Sclose, name);
+  return static_cast<long>(H5Sget_simple_extent_npoints(space));
+}
+
 std::vector<double> read_vector(hid_t parent, const std::string& name) {
   Handle set(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose, "dataset " + name);
   Handle space(H5Dget_space(set), H5Sclose, name);
@@ -218,11 +225,12 @@ std::pair<Vec<D>, Vec<D>> saved_box(hid_t g) {
 //! The saved parts of the body whose group is `name` that `read` accepts: in a checkpoint of
 //! one file its group, whose rows are the body's points in the order they were built
 //! (visit(group, nullptr)); in a distributed run's, the group in each rank's piece with the
-//! index in the body of each of its rows (visit(group, &indices); a piece may hold none). read(piece, lower, upper) decides for
-//! piece k whose points lie within [lower, upper] (k = −1: the one file); empty: every part.
+//! index in the body of each of its rows (visit(group, &indices); a piece may hold none).
+//! read(piece, lower, upper) decides for piece k whose points lie within [lower, upper]
+//! (k = −1: the one file); an empty filter reads every part.
 template <int D, class Visit>
 void for_each_part(hid_t index, const std::string& path, const std::string& name,
-                   const SavedPartFilter<D>& read, Visit&& visit) {
+                   const PartFilter<D>& read, Visit&& visit) {
   if (H5Aexists(index, "pieces") <= 0) {
     Handle bodies = group(index, "bodies", false);
     const auto [lower, upper] = saved_box<D>(-1);
@@ -252,7 +260,24 @@ long saved_points(hid_t index, const std::string& name) {
   Handle bodies = group(index, "bodies", false);
   Handle g = group(bodies, name, false);
   if (H5Aexists(index, "pieces") > 0) return read_number<long>(g, "points");
-  return static_cast<long>(read_vector(g, "mass").size());
+  return dataset_values(g, "mass");
+}
+
+//! visit(file, group name) for the checkpoint's body named `body`; false when it has none.
+//! Read failures become InputError naming the file.
+template <class Visit>
+bool with_saved_body(const std::string& path, const std::string& body, Visit&& visit) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try {
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
+    Handle bodies = group(file, "bodies", false);
+    const std::string found = body_group(bodies, body);
+    if (found.empty()) return false;
+    visit(file, found);
+    return true;
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
+  }
 }
 
 }  // namespace
@@ -391,7 +416,7 @@ CheckpointHeader read_checkpoint_header(const std::string& path) {
 
 template <int D>
 std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& s,
-                                            const SavedPartFilter<D>& read) {
+                                            const PartFilter<D>& read) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const SourceLocation where{path, 0, 0};
   std::vector<std::string> added;
@@ -461,37 +486,26 @@ std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<
 }
 
 std::optional<long> checkpoint_points(const std::string& path, const std::string& body) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  try {
-    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
-    Handle bodies = group(file, "bodies", false);
-    const std::string found = body_group(bodies, body);
-    if (found.empty()) return std::nullopt;
-    return saved_points(file, found);
-  } catch (const std::runtime_error& e) {
-    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
-  }
+  long points = 0;
+  if (!with_saved_body(path, body, [&](hid_t file, const std::string& found) {
+        points = saved_points(file, found);
+      }))
+    return std::nullopt;
+  return points;
 }
 
 template <int D>
 void for_each_saved_position(const std::string& path, const std::string& body,
-                             const SavedPartFilter<D>& read,
+                             const PartFilter<D>& read,
                              const std::function<void(long, const Vec<D>&)>& visit) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  try {
-    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
-    Handle bodies = group(file, "bodies", false);
-    const std::string found = body_group(bodies, body);
-    if (found.empty()) return;
+  with_saved_body(path, body, [&](hid_t file, const std::string& found) {
     for_each_part<D>(file, path, found, read, [&](hid_t g, const std::vector<double>* index) {
       const std::vector<double> values = read_vector(g, "position");
       const long rows = static_cast<long>(values.size()) / D;
       for (long r = 0; r < rows; ++r)
         visit(index ? static_cast<long>((*index)[r]) : r, Vec<D>(values.data() + D * r));
     });
-  } catch (const std::runtime_error& e) {
-    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
-  }
+  });
 }
 
 template void write_checkpoint<2>(const std::string&, const Simulation<2>&, const CheckpointHeader&,
@@ -499,14 +513,14 @@ template void write_checkpoint<2>(const std::string&, const Simulation<2>&, cons
 template void write_checkpoint<3>(const std::string&, const Simulation<3>&, const CheckpointHeader&,
                                   const NodeCarrier*);
 template std::vector<std::string> restore_checkpoint<2>(const std::string&, Simulation<2>&,
-                                                        const SavedPartFilter<2>&);
+                                                        const PartFilter<2>&);
 template std::vector<std::string> restore_checkpoint<3>(const std::string&, Simulation<3>&,
-                                                        const SavedPartFilter<3>&);
+                                                        const PartFilter<3>&);
 template void for_each_saved_position<2>(const std::string&, const std::string&,
-                                         const SavedPartFilter<2>&,
+                                         const PartFilter<2>&,
                                          const std::function<void(long, const Vec<2>&)>&);
 template void for_each_saved_position<3>(const std::string&, const std::string&,
-                                         const SavedPartFilter<3>&,
+                                         const PartFilter<3>&,
                                          const std::function<void(long, const Vec<3>&)>&);
 
 }  // namespace pellicle

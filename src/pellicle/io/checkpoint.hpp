@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "pellicle/dist/decomposition.hpp"
 #include "pellicle/mpm/simulation.hpp"
 
 namespace pellicle {
@@ -49,13 +50,6 @@ void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
 //! Read the header. Throws InputError naming the file when it is not a Pellicle checkpoint.
 CheckpointHeader read_checkpoint_header(const std::string& path);
 
-//! Which saved parts of a body a process reads: read(piece, lower, upper) for rank `piece`'s
-//! piece of a distributed run's checkpoint, whose points of the body lie within
-//! [lower, upper] (the whole space for pieces written without their box), or piece −1 for a
-//! checkpoint of one file. True: read it. An empty filter reads every part.
-template <int D>
-using SavedPartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
-
 //! Continue `simulation` (built from the case, possibly changed) from the checkpoint: every
 //! body found in it by name takes its saved points (the point count must match; a body built
 //! in part, as a distributed run's rank builds it, takes the rows of its points' indices in the
@@ -67,7 +61,7 @@ using SavedPartFilter = std::function<bool(long piece, const Vec<D>& lower, cons
 //! the process is in none of them.
 template <int D>
 std::vector<std::string> restore_checkpoint(const std::string& path, Simulation<D>& simulation,
-                                            const SavedPartFilter<D>& read = {});
+                                            const PartFilter<D>& read = {});
 
 //! The number of points the checkpoint holds of the body of this name; none when it holds no
 //! such body. Throws InputError naming the file when it cannot be read.
@@ -78,7 +72,7 @@ std::optional<long> checkpoint_points(const std::string& path, const std::string
 //! InputError naming the file when it cannot be read.
 template <int D>
 void for_each_saved_position(const std::string& path, const std::string& body,
-                             const SavedPartFilter<D>& read,
+                             const PartFilter<D>& read,
                              const std::function<void(long, const Vec<D>&)>& visit);
 
 }  // namespace pellicle
