@@ -62,6 +62,12 @@ more3=(--set grid.cell=0.025 --set solver.end_time=0.6 --restart "$work/t3/check
 expect 0 "results" -- "$pellicle" run --quiet "$cases/two_disks.toml" --out "$work/t3on1" "${more3[@]}"
 expect 0 "results" -- "${run2[@]}" "$cases/two_disks.toml" --out "$work/t3on2" "${more3[@]}"
 expect 0 "results" -- "${run3[@]}" "$cases/two_disks.toml" --out "$work/t3on3" "${more3[@]}"
+# The index holds the box around each piece's points of each body (three pieces: six rows of
+# corners), so that those ranks opened only the pieces whose boxes meet their patches.
+for b in 0 1; do
+  h5dump -d "/bodies/body_$b/boxes" "$work/t3/checkpoint.h5" | grep -q 'SIMPLE { ( 6, 2 )' ||
+    fail "the three-rank checkpoint's index lacks the pieces' boxes of body $b"
+done
 # A body the changed case adds starts from its case state, the others from the checkpoint.
 {
   cat "$cases/two_disks.toml"
@@ -96,7 +102,7 @@ same_last_row "$work/c1on1" "$work/c2on1" || fail "a two-rank checkpoint continu
 same_last_row "$work/c1on1" "$work/c2on3" || fail "a two-rank checkpoint continues elsewhere on three"
 grep -q "contact_x" "$work/c2on3/history.csv" || fail "the contact run has no contact columns"
 # Each rank wrote its own piece of that checkpoint; a piece missing, or left from another
-# checkpoint, is refused by name.
+# checkpoint, is refused by name, on one process and on two ranks (where rank 0 checks them).
 for r in 0000 0001; do
   [ -s "$work/c2/checkpoint_r$r.h5" ] || fail "checkpoint piece r$r missing"
 done
@@ -104,6 +110,8 @@ done
 mv "$work/c2/checkpoint_r0001.h5" "$work/c2/kept.h5"
 expect 2 "checkpoint_r0001.h5" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
   --out "$work/nopiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"
+expect 2 "checkpoint_r0001.h5" -- "${run2[@]}" "$cases/two_disks.toml" \
+  --out "$work/nopiece2" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"
 cp "$work/first/checkpoint.h5" "$work/c2/checkpoint_r0001.h5"
 expect 2 "not a piece of this checkpoint" -- "$pellicle" run --quiet "$cases/two_disks.toml" \
   --out "$work/badpiece" "${rel[@]}" "${to22[@]}" --restart "$work/c2/checkpoint.h5"

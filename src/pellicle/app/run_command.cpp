@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
 #include <optional>
 #include <thread>
@@ -179,6 +180,21 @@ int run_case(const CaseSource& source, const RunOptions& o, bool check_only) {
 #ifdef PELLICLE_WITH_MPI
   std::vector<Patch<D>> patches;
   if (distributed) {
+    if (saved) {  // rank 0 checks every piece once; each rank then opens only those it needs
+      std::exception_ptr problem;
+      if (lead) {
+        try {
+          check_checkpoint_pieces(o.restart);
+        } catch (const InputError&) {
+          problem = std::current_exception();
+        }
+      }
+      if (o.world->max(problem ? 1.0 : 0.0) > 0.0) {
+        if (problem) std::rethrow_exception(problem);
+        throw InputError(SourceLocation{o.restart, 0, 0}, "--restart",
+                         "a piece of the checkpoint is missing or foreign (rank 0 names it)");
+      }
+    }
     SavedPoints<D> points;
     if (saved)
       points = {[&o](const std::string& body) { return checkpoint_points(o.restart, body); },

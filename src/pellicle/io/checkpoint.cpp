@@ -210,16 +210,18 @@ std::string body_group(hid_t bodies, const std::string& name) {
   return "";
 }
 
-//! The box around a piece's points of a body (its `box` rows: lower, upper corner); the
-//! whole space for pieces written before pieces had boxes, and for a checkpoint of one file.
-template <int D>
-std::pair<Vec<D>, Vec<D>> saved_box(hid_t g) {
-  const double far = std::numeric_limits<double>::infinity();
-  if (g < 0 || H5Lexists(g, "box", H5P_DEFAULT) <= 0)
-    return {Vec<D>::Constant(-far), Vec<D>::Constant(far)};
-  const std::vector<double> box = read_vector(g, "box");
-  if (box.size() != 2 * D) throw std::runtime_error("a piece's box is not two corners");
-  return {Vec<D>(box.data()), Vec<D>(box.data() + D)};
+//! visit(file) for piece `rank` of the distributed run's checkpoint `path` at step `step`,
+//! refusing a file that is missing or not a piece of that checkpoint.
+template <class Visit>
+void with_piece(const std::string& path, int rank, long step, Visit&& visit) {
+  const std::string piece = piece_path(path, rank);
+  Handle file(H5Fopen(piece.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
+              "cannot open its piece " + piece);
+  if (H5Aexists(file, "format") <= 0 || read_text(file, "format") != kPieceFormat ||
+      read_number<long>(file, "step") != step)
+    throw std::runtime_error(piece + " is not a piece of this checkpoint (step " +
+                             std::to_string(step) + ")");
+  visit(file);
 }
 
 //! The saved parts of the body whose group is `name` that `read` accepts: in a checkpoint of
@@ -231,27 +233,37 @@ std::pair<Vec<D>, Vec<D>> saved_box(hid_t g) {
 template <int D, class Visit>
 void for_each_part(hid_t index, const std::string& path, const std::string& name,
                    const PartFilter<D>& read, Visit&& visit) {
+  const double far = std::numeric_limits<double>::infinity();
+  const Vec<D> everywhere_lower = Vec<D>::Constant(-far), everywhere_upper = Vec<D>::Constant(far);
+  Handle bodies = group(index, "bodies", false);
   if (H5Aexists(index, "pieces") <= 0) {
-    Handle bodies = group(index, "bodies", false);
-    const auto [lower, upper] = saved_box<D>(-1);
-    if (!read || read(-1, lower, upper)) visit(group(bodies, name, false), nullptr);
+    if (!read || read(-1, everywhere_lower, everywhere_upper))
+      visit(group(bodies, name, false), nullptr);
     return;
   }
   const long pieces = read_number<long>(index, "pieces"), step = read_number<long>(index, "step");
-  for (int rank = 0; rank < pieces; ++rank) {
-    const std::string piece = piece_path(path, rank);
-    Handle file(H5Fopen(piece.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose,
-                "cannot open its piece " + piece);
-    if (H5Aexists(file, "format") <= 0 || read_text(file, "format") != kPieceFormat ||
-        read_number<long>(file, "step") != step)
-      throw std::runtime_error(piece + " is not a piece of this checkpoint (step " +
-                               std::to_string(step) + ")");
-    Handle bodies = group(file, "bodies", false);
+  // The box around each piece's points of the body (rows: lower, upper corner), from the
+  // index, so that a piece the filter refuses is not opened. Checkpoints written before the
+  // index held them are read whole.
+  std::vector<double> boxes;
+  {
     Handle g = group(bodies, name, false);
-    const auto [lower, upper] = saved_box<D>(g);
-    if (read && !read(rank, lower, upper)) continue;
-    const std::vector<double> index_in_body = read_vector(g, "body_index");
-    visit(g, &index_in_body);
+    if (H5Lexists(g, "boxes", H5P_DEFAULT) > 0) boxes = read_vector(g, "boxes");
+  }
+  if (!boxes.empty() && static_cast<long>(boxes.size()) != 2 * D * pieces)
+    throw std::runtime_error("body group '" + name + "' has " + std::to_string(boxes.size()) +
+                             " box corners' coordinates for " + std::to_string(pieces) + " pieces");
+  for (int rank = 0; rank < pieces; ++rank) {
+    const double* box = boxes.empty() ? nullptr : boxes.data() + 2 * D * rank;
+    if (read && !(box ? read(rank, Vec<D>(box), Vec<D>(box + D))
+                      : read(rank, everywhere_lower, everywhere_upper)))
+      continue;
+    with_piece(path, rank, step, [&](hid_t file) {
+      Handle piece_bodies = group(file, "bodies", false);
+      Handle g = group(piece_bodies, name, false);
+      const std::vector<double> index_in_body = read_vector(g, "body_index");
+      visit(g, &index_in_body);
+    });
   }
 }
 
@@ -293,6 +305,7 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
   std::vector<HookState> hook_states;
   for (const auto& hook : s.hooks()) hook_states.push_back(hook->save_state());
   const double max_speed = ranks ? ranks->max(s.max_point_speed()) : s.max_point_speed();
+  std::vector<double> piece_boxes;
   if (ranks) {
     if (!to_whole_grid)
       throw std::logic_error("a distributed run's checkpoint needs the carrier to the whole grid");
@@ -315,15 +328,6 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
           write_text(g, "name", body.name);
           Handle columns = group(g, "columns", true);
           write_array(g, "body_index", p[built].data() + body.begin, body.count(), 1);
-          // The box around these points: a continued run's ranks read only the pieces
-          // whose boxes meet their patches.
-          Vec<D> lower = Vec<D>::Constant(std::numeric_limits<double>::infinity());
-          Vec<D> upper = -lower;
-          for (long q = body.begin; q < body.end; ++q)
-            lower = lower.cwiseMin(p.position[q]), upper = upper.cwiseMax(p.position[q]);
-          std::vector<double> corners(lower.data(), lower.data() + D);
-          corners.insert(corners.end(), upper.data(), upper.data() + D);
-          write_array(g, "box", corners.data(), 2, D);
           for_each_point_array<D>(p, body.begin,
                                   [&](const std::string& name, const double* data, int k) {
                                     write_array(g, name, data, body.count(), k);
@@ -337,6 +341,18 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
       throw std::runtime_error(failure.empty() ? "cannot write checkpoint " + path +
                                                      ": another rank could not write its piece"
                                                : failure);
+    // The box around each piece's points of each body, for the index: a continued run's
+    // ranks open only the pieces whose boxes meet their patches.
+    std::vector<double> corners;
+    for (const auto& body : p.bodies) {
+      Vec<D> lower = Vec<D>::Constant(std::numeric_limits<double>::infinity());
+      Vec<D> upper = -lower;
+      for (long q = body.begin; q < body.end; ++q)
+        lower = lower.cwiseMin(p.position[q]), upper = upper.cwiseMax(p.position[q]);
+      corners.insert(corners.end(), lower.data(), lower.data() + D);
+      corners.insert(corners.end(), upper.data(), upper.data() + D);
+    }
+    piece_boxes = ranks->all_gather(corners);  // rank by rank, body by body
     if (ranks->rank() != 0) return;
   }
   write_atomically(path, [&](hid_t file) {
@@ -362,6 +378,13 @@ void write_checkpoint(const std::string& path, const Simulation<D>& s,
       write_text(g, "name", body.name);
       write_number<long>(g, "material", body.material);
       write_number<long>(g, "points", body.built);
+      if (ranks) {  // piece by piece: lower, upper corner
+        std::vector<double> boxes;
+        const std::size_t per_piece = 2 * D * p.bodies.size();
+        for (std::size_t at = 2 * D * b; at < piece_boxes.size(); at += per_piece)
+          boxes.insert(boxes.end(), piece_boxes.begin() + at, piece_boxes.begin() + at + 2 * D);
+        write_array(g, "boxes", boxes.data(), 2 * ranks->size(), D);
+      }
       Handle columns = group(g, "columns", true);
       if (!ranks)
         for_each_point_array<D>(p, body.begin,
@@ -411,6 +434,18 @@ CheckpointHeader read_checkpoint_header(const std::string& path) {
     throw;
   } catch (const std::runtime_error& e) {
     throw InputError(where, "--restart", e.what());
+  }
+}
+
+void check_checkpoint_pieces(const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  try {
+    Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose, "cannot open");
+    if (H5Aexists(file, "pieces") <= 0) return;
+    const long pieces = read_number<long>(file, "pieces"), step = read_number<long>(file, "step");
+    for (int rank = 0; rank < pieces; ++rank) with_piece(path, rank, step, [](hid_t) {});
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation{path, 0, 0}, "--restart", e.what());
   }
 }
 

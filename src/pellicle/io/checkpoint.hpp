@@ -9,11 +9,11 @@
 //!                     column marked for checkpoints (one row per point)
 //!   /hooks/<name>     the arrays of hooks that carry state (contact-release's node states)
 //! A distributed run's checkpoint is this file without the bodies' point datasets (each body
-//! group has attribute `points`, its point count as built, and the file attribute `pieces`
-//! the number of ranks), beside one piece per rank, checkpoint_rNNNN.h5 (attributes format,
-//! step, rank): /bodies/body_N with the rank's points of the body, their datasets as above,
-//! `body_index`, each point's index in its body as built, and `box`, the lower and upper
-//! corners of the box around them.
+//! group has attribute `points`, its point count as built, and dataset `boxes`, the lower and
+//! upper corners of the box around each piece's points of the body; the file attribute
+//! `pieces` is the number of ranks), beside one piece per rank, checkpoint_rNNNN.h5
+//! (attributes format, step, rank): /bodies/body_N with the rank's points of the body, their
+//! datasets as above and `body_index`, each point's index in its body as built.
 //! The frame estimators draw their random points from a generator seeded per cell, so the
 //! run has no random state beyond the seed recorded in `rng`.
 
@@ -49,6 +49,11 @@ void write_checkpoint(const std::string& path, const Simulation<D>& simulation,
 
 //! Read the header. Throws InputError naming the file when it is not a Pellicle checkpoint.
 CheckpointHeader read_checkpoint_header(const std::string& path);
+
+//! Check that each piece of a distributed run's checkpoint is there and is a piece of it (one
+//! opening per piece); nothing to check for a checkpoint of one file. Throws InputError naming
+//! the first piece that is not. A continued run's ranks open only the pieces they need.
+void check_checkpoint_pieces(const std::string& path);
 
 //! Continue `simulation` (built from the case, possibly changed) from the checkpoint: every
 //! body found in it by name takes its saved points (the point count must match; a body built
