@@ -415,6 +415,14 @@ class TransferImpl final : public Transfer<D> {
   struct ThreadTarget {
     ScatterTarget<D> target{};
     bool direct = true;
+    long stencil_extent = 0;  //!< a stencil's last node less its first (its base)
+
+    //! Whether the stencil `s` writes only nodes of the window: most of a thread's points
+    //! when its share borders another's, whose nodes near the border go to its copy.
+    bool takes_whole(const Stencil<D, Kernel>& s) const {
+      return direct ||
+             (s.base >= target.window_first && s.base + stencil_extent <= target.window_last);
+    }
   };
 
   //! What the stencils of one range of points touch (a field's points, or all points), found
@@ -469,6 +477,7 @@ class TransferImpl final : public Transfer<D> {
     }
     ThreadTarget target{buffers_.target(t, grid), true};
     target.direct = target.target.window_first <= lo && hi <= target.target.window_last;
+    for (int e = 0; e < D; ++e) target.stencil_extent += (Kernel::width - 1) * grid.strides()[e];
     return target;
   }
 
@@ -479,7 +488,7 @@ class TransferImpl final : public Transfer<D> {
                                             const Grid<D>& grid, bool axisymmetric,
                                             const Mat<D>* affine,
                                             const ThreadTarget& target) const {
-    if (target.direct)
+    if (target.takes_whole(s))
       scatter_point_into<WithMass, WithForce, Affine, MomentumOnly>(
           points, p, s, gravity, grid, axisymmetric, affine,
           [&](long) -> const NodeFields<D>& { return target.target.grid; });
