@@ -110,8 +110,8 @@ std::vector<Patch<D>> bisect_patches(const IVec<D>& cells, int ranks, int min_ce
     }
     std::vector<int> next;
     for (int b : level) {
+      const Box<D> box = boxes[b];  // uncut and pending, as its sides start
       boxes[b].pending = false;
-      const Box<D> box = boxes[b];
       if (box.ranks == 1) {  // the grid, one patch
         patches.push_back({box.lower, box.upper, box.first_rank, counts[box.offset]});
         continue;
@@ -129,8 +129,6 @@ std::vector<Patch<D>> bisect_patches(const IVec<D>& cells, int ranks, int min_ce
       lower.ranks = low_ranks;
       upper.ranks = box.ranks - low_ranks;
       upper.first_rank = box.first_rank + low_ranks;
-      lower.pending = upper.pending = true;
-      lower.child = upper.child = -1;
       long lower_points = 0, upper_points = 0;  // for the sides of one rank: their patches
       for (int c = 0; c < box.planes(); ++c)
         (c < cut ? lower_points : upper_points) += counts[box.offset + c];

@@ -61,8 +61,8 @@ std::vector<Patch<D>> bisect_patches(const CellCounts<D>& counts, int ranks, int
 
 //! Which saved parts of a body a process reads when it continues a checkpoint:
 //! read(piece, lower, upper) for rank `piece`'s piece of a distributed run's checkpoint, whose
-//! points of the body lie within [lower, upper] (the whole space for pieces written without
-//! their box), or piece −1 for a checkpoint of one file. True: read it. An empty filter reads
+//! points of the body lie within [lower, upper] (the whole space when the checkpoint's index
+//! holds no boxes), or piece −1 for a checkpoint of one file. True: read it. An empty filter reads
 //! every part (io/checkpoint.hpp).
 template <int D>
 using PartFilter = std::function<bool(long piece, const Vec<D>& lower, const Vec<D>& upper)>;
